@@ -1,0 +1,68 @@
+// A case file as written (contract: shared spec case-format.md), before any arithmetic. Numbers keep
+// their literal text so that every precision converts the same decimal, never a rounded double.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "impact3d/numeric/strategy.hpp"
+#include "impact3d/numeric/units.hpp"
+
+namespace impact3d::io {
+
+// Bad input: `path` is the JSON path of the offending field ("$.vehicles[0].mass").
+struct CaseError : std::runtime_error {
+  std::string path;
+  CaseError(std::string p, const std::string& what) : std::runtime_error(what), path(std::move(p)) {}
+  std::string line() const { return path + ": " + what(); }
+};
+
+struct Number {
+  std::string text;  // the literal as written in the file
+  double value;      // for validation and messages only
+  std::string path;
+};
+
+using Vector3 = std::array<Number, 3>;
+
+struct VehicleSpec {
+  std::string name;
+  Number mass;
+  std::array<Vector3, 3> inertia;  // full tensor (the diagonal shorthand is expanded, zeros off-diagonal)
+  std::string inertia_path;
+  Number yaw, pitch, roll;
+  Vector3 velocity, angular_velocity, impulse_center;
+};
+
+struct ContactSpec {
+  bool by_vectors = false;
+  Number normal_yaw, normal_pitch, tangent_roll;
+  Vector3 normal, tangent;
+  std::string path;
+};
+
+struct StrategySpec {
+  enum class Kind { pc_crash, wach, brach } kind;
+  Number mu;
+  WachLimit limit = WachLimit::cir;
+  std::optional<Number> mu_t, mu_z;  // empty: "critical"
+  std::string path;
+};
+
+struct CaseSpec {
+  std::string name;
+  Units units = Units::SI;
+  std::array<VehicleSpec, 2> vehicles;
+  ContactSpec contact;
+  Number restitution;
+  std::vector<StrategySpec> strategies;
+  bool strategy_is_array = false;
+};
+
+// Parses and validates everything that needs no arithmetic; throws CaseError.
+CaseSpec read_case(const std::string& json_text);
+
+}  // namespace impact3d::io

@@ -1,0 +1,90 @@
+// A small JSON emitter for results: numbers go out as text the caller formats (every digit of the
+// precision), which a generic JSON library would re-round. Throws on a non-finite number, so that a
+// result that overflowed is reported as an error instead of as invalid JSON.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace impact3d::io {
+
+class JsonWriter {
+ public:
+  void begin_object() { open('{'); }
+  void end_object() { close('}'); }
+  void begin_array() { open('['); }
+  void end_array() { close(']'); }
+  JsonWriter& key(const std::string& k) {
+    item();
+    out_ += quote(k) + ": ";
+    pending_key_ = true;
+    return *this;
+  }
+  void raw(const std::string& number_text) {
+    if (number_text.find_first_of("ni") != std::string::npos)  // inf, nan
+      throw std::runtime_error("a result is not finite (" + number_text + ")");
+    value(number_text);
+  }
+  void string(const std::string& s) { value(quote(s)); }
+  void boolean(bool b) { value(b ? "true" : "false"); }
+  void null() { value("null"); }
+  // A short array of numbers on one line.
+  void number_array(const std::vector<std::string>& items) {
+    std::string line = "[";
+    for (std::size_t i = 0; i < items.size(); ++i) {
+      if (items[i].find_first_of("ni") != std::string::npos)
+        throw std::runtime_error("a result is not finite (" + items[i] + ")");
+      line += (i ? ", " : "") + items[i];
+    }
+    value(line + "]");
+  }
+  std::string str() const { return out_ + "\n"; }
+
+  static std::string quote(const std::string& s) {
+    std::string q = "\"";
+    for (unsigned char c : s) {
+      if (c == '"') q += "\\\"";
+      else if (c == '\\') q += "\\\\";
+      else if (c == '\n') q += "\\n";
+      else if (c < 0x20) {
+        static const char* hex = "0123456789abcdef";
+        q += "\\u00";
+        q += hex[c >> 4];
+        q += hex[c & 15];
+      } else q += static_cast<char>(c);
+    }
+    return q + "\"";
+  }
+
+ private:
+  std::string out_;
+  std::vector<bool> has_items_;
+  bool pending_key_ = false;
+
+  void item() {
+    if (pending_key_) return;
+    if (!has_items_.empty()) {
+      if (has_items_.back()) out_ += ",";
+      has_items_.back() = true;
+      out_ += "\n" + std::string(2 * has_items_.size(), ' ');
+    }
+  }
+  void value(const std::string& text) {
+    item();
+    pending_key_ = false;
+    out_ += text;
+  }
+  void open(char c) {
+    value(std::string(1, c));
+    has_items_.push_back(false);
+  }
+  void close(char c) {
+    const bool had = has_items_.back();
+    has_items_.pop_back();
+    if (had) out_ += "\n" + std::string(2 * has_items_.size(), ' ');
+    out_ += c;
+  }
+};
+
+}  // namespace impact3d::io

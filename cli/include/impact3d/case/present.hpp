@@ -1,0 +1,51 @@
+// SI results back into the case's unit system, as text with a chosen number of significant digits.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "impact3d/case/case_spec.hpp"
+#include "impact3d/case/scalar_text.hpp"
+#include "impact3d/numeric/types.hpp"
+#include "impact3d/numeric/units.hpp"
+
+namespace impact3d::io {
+
+template <typename Scalar>
+struct Present {
+  UnitFactors<Scalar> f;
+  int digits;
+
+  Present(Units u, int d) : f(unit_factors<Scalar>(u)), digits(d) {}
+
+  std::string num(const Scalar& x) const { return scalar_to_text(x, digits); }
+  std::string num(const Scalar& x, const Scalar& factor) const { return num(Scalar(x / factor)); }
+  std::vector<std::string> vec(const Vec3<Scalar>& v, const Scalar& factor) const {
+    return {num(v.x(), factor), num(v.y(), factor), num(v.z(), factor)};
+  }
+};
+
+inline const char* unit_label(Units u, const std::string& quantity) {
+  const bool si = u == Units::SI;
+  if (quantity == "mass") return si ? "kg" : "lb";
+  if (quantity == "velocity") return si ? "m/s" : "mph";
+  if (quantity == "angular_velocity") return si ? "rad/s" : "deg/s";
+  if (quantity == "impulse") return si ? "N s" : "lbf s";
+  if (quantity == "energy") return si ? "J" : "ft lbf";
+  return "";
+}
+
+// The strategy as the user wrote it, e.g. "pc-crash mu=0.4" or "brach mu_t=critical mu_z=0".
+inline std::string strategy_label(const StrategySpec& s) {
+  switch (s.kind) {
+    case StrategySpec::Kind::pc_crash: return "pc-crash mu=" + s.mu.text;
+    case StrategySpec::Kind::wach:
+      return "wach mu=" + s.mu.text + (s.limit == WachLimit::cir ? " limit=cir" : " limit=gir");
+    case StrategySpec::Kind::brach:
+      return "brach mu_t=" + (s.mu_t ? s.mu_t->text : std::string("critical")) +
+             " mu_z=" + (s.mu_z ? s.mu_z->text : std::string("critical"));
+  }
+  return "?";
+}
+
+}  // namespace impact3d::io

@@ -1,0 +1,158 @@
+// The result document of the contract (shared spec case-format.md, "Result"), with the extra keys
+// documented in the README: impulse-space geometry, sliding and swerve, Delta-V magnitude and PDOF.
+#pragma once
+
+#include "impact3d/case/json_writer.hpp"
+#include "impact3d/case/present.hpp"
+#include "impact3d/numeric/analysis.hpp"
+
+namespace impact3d::io {
+
+inline void write_strategy_echo(JsonWriter& w, const StrategySpec& s) {
+  w.begin_object();
+  switch (s.kind) {
+    case StrategySpec::Kind::pc_crash:
+      w.key("name").string("pc-crash");
+      w.key("mu").raw(s.mu.text);
+      break;
+    case StrategySpec::Kind::wach:
+      w.key("name").string("wach");
+      w.key("mu").raw(s.mu.text);
+      w.key("limit").string(s.limit == WachLimit::cir ? "cir" : "gir");
+      break;
+    case StrategySpec::Kind::brach:
+      w.key("name").string("brach");
+      if (s.mu_t) w.key("mu_t").raw(s.mu_t->text); else w.key("mu_t").string("critical");
+      if (s.mu_z) w.key("mu_z").raw(s.mu_z->text); else w.key("mu_z").string("critical");
+      break;
+  }
+  w.end_object();
+}
+
+template <typename Scalar>
+void write_optional(JsonWriter& w, const std::string& key, const std::optional<Scalar>& v, const Present<Scalar>& p) {
+  if (v) w.key(key).raw(p.num(*v));
+}
+
+template <typename Scalar>
+void write_matrix(JsonWriter& w, const Mat3<Scalar>& m, const Present<Scalar>& p) {
+  w.begin_array();
+  for (int k = 0; k < 3; ++k) w.number_array(p.vec(m.row(k).transpose(), Scalar(1)));
+  w.end_array();
+}
+
+template <typename Scalar>
+void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* veh, const Solution<Scalar>& s,
+                    const Present<Scalar>& p) {
+  const auto& f = p.f;
+  const auto& imp = s.impulse;
+  w.begin_object();
+  w.key("strategy");
+  write_strategy_echo(w, spec);
+  w.key("regime").string(regime_name(imp.regime));
+  w.key("impulse_ratio").begin_object();
+  write_optional(w, "mu", imp.mu, p);
+  write_optional(w, "mu_t", imp.mu_t, p);
+  write_optional(w, "mu_z", imp.mu_z, p);
+  w.end_object();
+  w.key("limits").begin_object();
+  write_optional(w, "gir", imp.gir, p);
+  write_optional(w, "cir", imp.cir, p);
+  write_optional(w, "mu_t_critical", imp.mu_t_critical, p);
+  write_optional(w, "mu_z_critical", imp.mu_z_critical, p);
+  w.end_object();
+  if (imp.plane_angle_deg) w.key("plane_angle_deg").raw(p.num(*imp.plane_angle_deg));
+  w.key("impulse").begin_object();
+  w.key("contact").number_array(p.vec(imp.P_C, f.impulse));
+  w.key("world").number_array(p.vec(s.P_W, f.impulse));
+  w.end_object();
+  w.key("relative_velocity").begin_object();
+  w.key("before").number_array(p.vec(s.V_ri, f.velocity));
+  w.key("after").number_array(p.vec(s.V_rf, f.velocity));
+  w.end_object();
+  w.key("sliding").begin_object();
+  w.key("before").raw(p.num(s.sliding_before, f.velocity));
+  w.key("after").raw(p.num(s.sliding_after, f.velocity));
+  if (s.swerve_deg) w.key("swerve_angle_deg").raw(p.num(*s.swerve_deg)); else w.key("swerve_angle_deg").null();
+  if (s.swerve_speed) w.key("swerve_speed").raw(p.num(*s.swerve_speed, f.velocity)); else w.key("swerve_speed").null();
+  w.end_object();
+  w.key("impulse_space").begin_object();
+  w.key("restitution_effective").raw(p.num(s.restitution_effective));
+  w.key("t_sliding").string(axis_change_name(s.t_change));
+  w.key("z_sliding").string(axis_change_name(s.z_change));
+  w.key("volume").string(s.volume);
+  w.end_object();
+  w.key("vehicles").begin_array();
+  for (int i = 0; i < 2; ++i) {
+    const auto& c = s.change[i];
+    w.begin_object();
+    w.key("name").string(veh[i].name);
+    w.key("velocity").number_array(p.vec(s.after[i].v_W, f.velocity));
+    w.key("angular_velocity").number_array(p.vec(s.after[i].w_B, f.angular_velocity));
+    w.key("delta_v").number_array(p.vec(c.dv_W, f.velocity));
+    w.key("delta_v_magnitude").raw(p.num(c.dv, f.velocity));
+    if (c.pdof_deg) w.key("pdof_deg").raw(p.num(*c.pdof_deg)); else w.key("pdof_deg").null();
+    if (c.clock) w.key("pdof_clock").raw(std::to_string(*c.clock)); else w.key("pdof_clock").null();
+    w.end_object();
+  }
+  w.end_array();
+  w.key("energy").begin_object();
+  w.key("before").raw(p.num(s.energy_before, f.energy));
+  w.key("after").raw(p.num(s.energy_after, f.energy));
+  w.key("loss").raw(p.num(s.energy_loss, f.energy));
+  w.end_object();
+  w.key("warnings").begin_array();
+  for (const auto& warning : s.warnings) w.string(warning.text);
+  w.end_array();
+  w.end_object();
+}
+
+template <typename Scalar>
+std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision) {
+  const Present<Scalar> p(c.units, std::numeric_limits<Scalar>::max_digits10);
+  const auto& f = p.f;
+  JsonWriter w;
+  w.begin_object();
+  w.key("name").string(c.name);
+  w.key("units").string(units_name(c.units));
+  w.key("precision").string(precision);
+  w.key("engine").string("direct");
+  w.key("coefficients").begin_object();
+  w.key("m_prime").raw(p.num(a.m_prime, f.mass));
+  w.key("K");
+  write_matrix(w, a.K, p);
+  w.key("det_K").raw(p.num(Scalar(a.K.determinant())));
+  w.key("condition_K").raw(p.num(a.kappa));
+  w.key("T").begin_array();
+  for (int i = 0; i < 2; ++i) write_matrix(w, a.T[i], p);
+  w.end_array();
+  w.end_object();
+  w.key("impulse_space").begin_object();
+  w.key("max_energy_loss_impulse").number_array(p.vec(a.space.P_max_loss, f.impulse));
+  w.key("critical_impulse_line").begin_object();
+  w.key("point").number_array(p.vec(a.space.P_max_loss, f.impulse));
+  w.key("direction").number_array(p.vec(a.space.cil_direction, Scalar(1)));
+  w.end_object();
+  w.key("planes").begin_object();
+  const char* names[3] = {"max_compression", "t_no_sliding", "z_no_sliding"};
+  for (int k = 0; k < 3; ++k) {
+    w.key(names[k]).begin_object();
+    w.key("normal").number_array(p.vec(a.space.plane_normal.row(k).transpose(), Scalar(1)));
+    w.key("offset").raw(p.num(a.space.plane_offset(k), f.impulse));
+    w.end_object();
+  }
+  w.key("restitution").begin_object();
+  w.key("normal").number_array(p.vec(a.space.plane_normal.row(0).transpose(), Scalar(1)));
+  w.key("offset").raw(p.num(a.space.restitution_offset, f.impulse));
+  w.end_object();
+  w.end_object();
+  w.end_object();
+  w.key("results").begin_array();
+  for (std::size_t k = 0; k < a.solutions.size(); ++k)
+    write_solution(w, c.strategies[k], c.vehicles.data(), a.solutions[k], p);
+  w.end_array();
+  w.end_object();
+  return w.str();
+}
+
+}  // namespace impact3d::io

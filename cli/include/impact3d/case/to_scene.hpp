@@ -1,0 +1,87 @@
+// From a validated case to SI Scene and strategies in the target precision; the checks that need
+// arithmetic (positive definiteness, degenerate contact vectors, approach) happen here.
+#pragma once
+
+#include <Eigen/Cholesky>
+
+#include "impact3d/case/case_spec.hpp"
+#include "impact3d/case/scalar_text.hpp"
+#include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/rotation.hpp"
+#include "impact3d/numeric/strategy.hpp"
+#include "impact3d/numeric/units.hpp"
+
+namespace impact3d::io {
+
+template <typename Scalar>
+Scalar to_scalar(const Number& n) {
+  return scalar_from_text<Scalar>(n.text);
+}
+
+template <typename Scalar>
+Vec3<Scalar> to_vec3(const Vector3& v, const Scalar& factor) {
+  return Vec3<Scalar>(to_scalar<Scalar>(v[0]), to_scalar<Scalar>(v[1]), to_scalar<Scalar>(v[2])) * factor;
+}
+
+template <typename Scalar>
+Mat3<Scalar> contact_rotation(const ContactSpec& c) {
+  if (!c.by_vectors)
+    return rotation_zyx_deg(to_scalar<Scalar>(c.normal_yaw), to_scalar<Scalar>(c.normal_pitch),
+                            to_scalar<Scalar>(c.tangent_roll));
+  const Vec3<Scalar> n = to_vec3(c.normal, Scalar(1)), t = to_vec3(c.tangent, Scalar(1));
+  if (n.squaredNorm() == Scalar(0)) throw CaseError(c.path + ".normal", "zero vector");
+  // Parallel when the tangent has no component across the normal, to the rounding of the products.
+  const Scalar across = n.cross(t).squaredNorm(), scale = n.squaredNorm() * t.squaredNorm();
+  if (!(across > Scalar(64) * std::numeric_limits<Scalar>::epsilon() * scale))
+    throw CaseError(c.path + ".tangent", "zero or parallel to the normal");
+  return contact_frame_from_vectors(n, t);
+}
+
+template <typename Scalar>
+RigidBody<Scalar> to_body(const VehicleSpec& v, const UnitFactors<Scalar>& f) {
+  RigidBody<Scalar> b;
+  b.mass = to_scalar<Scalar>(v.mass) * f.mass;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) b.J_B(i, j) = to_scalar<Scalar>(v.inertia[i][j]) * f.inertia;
+  if (b.J_B.llt().info() != Eigen::Success) throw CaseError(v.inertia_path, "not positive definite");
+  b.R_WB = rotation_zyx_deg(to_scalar<Scalar>(v.yaw), to_scalar<Scalar>(v.pitch), to_scalar<Scalar>(v.roll));
+  b.v_W = to_vec3(v.velocity, f.velocity);
+  b.w_B = to_vec3(v.angular_velocity, f.angular_velocity);
+  b.p_CgIc_B = to_vec3(v.impulse_center, f.length);
+  return b;
+}
+
+template <typename Scalar>
+Scene<Scalar> to_scene(const CaseSpec& c) {
+  const UnitFactors<Scalar> f = unit_factors<Scalar>(c.units);
+  Scene<Scalar> s;
+  for (int i = 0; i < 2; ++i) s.body[i] = to_body(c.vehicles[i], f);
+  s.R_WC = contact_rotation<Scalar>(c.contact);
+  s.restitution = to_scalar<Scalar>(c.restitution);
+  const Scalar V_rn = relative_velocity_C(s).x();
+  if (!(V_rn > Scalar(0)))
+    throw CaseError("$.vehicles", "not approaching: the relative normal velocity at the impulse centre is " +
+                                      scalar_to_text(Scalar(V_rn / f.velocity), 6) +
+                                      " (must be > 0; the normal points into vehicle 1)");
+  return s;
+}
+
+template <typename Scalar>
+Strategy<Scalar> to_strategy(const StrategySpec& s) {
+  using Kind = StrategySpec::Kind;
+  if (s.kind == Kind::pc_crash) return PcCrash<Scalar>{to_scalar<Scalar>(s.mu)};
+  if (s.kind == Kind::wach) return Wach<Scalar>{to_scalar<Scalar>(s.mu), s.limit};
+  Brach<Scalar> b;
+  if (s.mu_t) b.mu_t = to_scalar<Scalar>(*s.mu_t);
+  if (s.mu_z) b.mu_z = to_scalar<Scalar>(*s.mu_z);
+  return b;
+}
+
+template <typename Scalar>
+std::vector<Strategy<Scalar>> to_strategies(const CaseSpec& c) {
+  std::vector<Strategy<Scalar>> out;
+  for (const auto& s : c.strategies) out.push_back(to_strategy<Scalar>(s));
+  return out;
+}
+
+}  // namespace impact3d::io

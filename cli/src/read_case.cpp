@@ -1,0 +1,277 @@
+// Structural validation of a case file: every rejection names the JSON path and the problem.
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "impact3d/case/case_spec.hpp"
+#include "impact3d/case/json_literals.hpp"
+#include "impact3d/case/strategy_option.hpp"
+
+namespace impact3d::io {
+namespace {
+
+using json = nlohmann::json;
+
+// Larger magnitudes are no vehicle collision and would overflow energies and products of inertia.
+constexpr double kMaxMagnitude = 1e12;
+
+const char* type_name(const json& v) {
+  switch (v.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::object: return "an object";
+    case json::value_t::array: return "an array";
+    case json::value_t::string: return "a string";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float: return "a number";
+    default: return "an unsupported value";
+  }
+}
+
+class Reader {
+ public:
+  explicit Reader(const ParsedJson& p) : parsed_(p) {}
+
+  [[noreturn]] void fail(const std::string& ptr, const std::string& msg) const {
+    throw CaseError(display_path(ptr), msg);
+  }
+
+  const json& object(const json& v, const std::string& ptr, std::set<std::string> allowed) const {
+    if (!v.is_object()) fail(ptr, fmt::format("expected an object, got {}", type_name(v)));
+    for (const auto& [k, _] : v.items()) {
+      if (!k.empty() && k[0] == '_') continue;  // comments and private extensions
+      if (!allowed.count(k)) fail(ptr + "/" + k, "unknown key (keys starting with '_' are ignored)");
+    }
+    return v;
+  }
+
+  const json* optional(const json& obj, const std::string& key) const {
+    auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+  }
+
+  const json& required(const json& obj, const std::string& ptr, const std::string& key) const {
+    auto* v = optional(obj, key);
+    if (!v) fail(ptr + "/" + key, "missing");
+    return *v;
+  }
+
+  Number number(const json& v, const std::string& ptr) const {
+    if (!v.is_number()) fail(ptr, fmt::format("expected a number, got {}", type_name(v)));
+    const auto lit = parsed_.literal.find(ptr);
+    Number n{lit == parsed_.literal.end() ? v.dump() : lit->second, v.get<double>(), display_path(ptr)};
+    if (!std::isfinite(n.value)) fail(ptr, fmt::format("not a finite number ({})", n.text));
+    if (std::fabs(n.value) > kMaxMagnitude)
+      fail(ptr, fmt::format("out of range: magnitude {} exceeds {:g}", n.text, kMaxMagnitude));
+    return n;
+  }
+
+  Number number_or(const json& obj, const std::string& ptr, const std::string& key) const {
+    if (auto* v = optional(obj, key)) return number(*v, ptr + "/" + key);
+    return Number{"0", 0.0, display_path(ptr + "/" + key)};
+  }
+
+  Number positive(const json& v, const std::string& ptr) const {
+    Number n = number(v, ptr);
+    if (!(n.value > 0)) fail(ptr, fmt::format("must be > 0 (got {})", n.text));
+    return n;
+  }
+
+  Vector3 vector3(const json& v, const std::string& ptr) const {
+    if (!v.is_array()) fail(ptr, fmt::format("expected an array of 3 numbers, got {}", type_name(v)));
+    if (v.size() != 3) fail(ptr, fmt::format("expected 3 numbers, got {}", v.size()));
+    return {number(v[0], ptr + "/0"), number(v[1], ptr + "/1"), number(v[2], ptr + "/2")};
+  }
+
+  Vector3 vector3_or_zero(const json& obj, const std::string& ptr, const std::string& key) const {
+    if (auto* v = optional(obj, key)) return vector3(*v, ptr + "/" + key);
+    const std::string p = display_path(ptr + "/" + key);
+    return {Number{"0", 0.0, p}, Number{"0", 0.0, p}, Number{"0", 0.0, p}};
+  }
+
+  std::string string(const json& v, const std::string& ptr) const {
+    if (!v.is_string()) fail(ptr, fmt::format("expected a string, got {}", type_name(v)));
+    return v.get<std::string>();
+  }
+
+  void inertia(VehicleSpec& veh, const json& v, const std::string& ptr) const {
+    veh.inertia_path = display_path(ptr);
+    const std::string zero_path = display_path(ptr);
+    if (v.is_object()) {
+      object(v, ptr, {"Ixx", "Iyy", "Izz"});
+      const char* keys[3] = {"Ixx", "Iyy", "Izz"};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          veh.inertia[i][j] = i == j ? positive(required(v, ptr, keys[i]), ptr + "/" + keys[i])
+                                     : Number{"0", 0.0, zero_path};
+      return;
+    }
+    if (!v.is_array() || v.size() != 3)
+      fail(ptr, "expected a 3x3 tensor [[Ixx, Ixy, Ixz], ...] or {\"Ixx\", \"Iyy\", \"Izz\"}");
+    for (int i = 0; i < 3; ++i) veh.inertia[i] = vector3(v[i], ptr + "/" + std::to_string(i));
+    for (int i = 0; i < 3; ++i) {
+      if (!(veh.inertia[i][i].value > 0))
+        fail(ptr, fmt::format("not positive definite: diagonal entry [{}][{}] = {}", i, i, veh.inertia[i][i].text));
+      for (int j = i + 1; j < 3; ++j)
+        if (veh.inertia[i][j].value != veh.inertia[j][i].value)
+          fail(ptr, fmt::format("not symmetric: [{}][{}] = {} but [{}][{}] = {}", i, j, veh.inertia[i][j].text, j, i,
+                                veh.inertia[j][i].text));
+    }
+  }
+
+  VehicleSpec vehicle(const json& v, const std::string& ptr) const {
+    object(v, ptr, {"name", "mass", "inertia", "orientation_deg", "velocity", "angular_velocity", "impulse_center"});
+    VehicleSpec veh;
+    if (auto* n = optional(v, "name")) veh.name = string(*n, ptr + "/name");
+    veh.mass = positive(required(v, ptr, "mass"), ptr + "/mass");
+    inertia(veh, required(v, ptr, "inertia"), ptr + "/inertia");
+    static const json empty = json::object();
+    const json* o = optional(v, "orientation_deg");
+    const std::string optr = ptr + "/orientation_deg";
+    if (o) object(*o, optr, {"yaw", "pitch", "roll"});
+    const json& orient = o ? *o : empty;
+    veh.yaw = number_or(orient, optr, "yaw");
+    veh.pitch = number_or(orient, optr, "pitch");
+    veh.roll = number_or(orient, optr, "roll");
+    veh.velocity = vector3(required(v, ptr, "velocity"), ptr + "/velocity");
+    veh.angular_velocity = vector3_or_zero(v, ptr, "angular_velocity");
+    veh.impulse_center = vector3(required(v, ptr, "impulse_center"), ptr + "/impulse_center");
+    return veh;
+  }
+
+  ContactSpec contact(const json& v, const std::string& ptr) const {
+    object(v, ptr, {"normal_yaw_deg", "normal_pitch_deg", "tangent_roll_deg", "normal", "tangent"});
+    ContactSpec c;
+    c.path = display_path(ptr);
+    const bool angles = optional(v, "normal_yaw_deg") || optional(v, "normal_pitch_deg") || optional(v, "tangent_roll_deg");
+    const bool vectors = optional(v, "normal") || optional(v, "tangent");
+    if (angles && vectors) fail(ptr, "give either the angles (normal_yaw_deg, ...) or the vectors (normal, tangent), not both");
+    if (!angles && !vectors) fail(ptr + "/normal_yaw_deg", "missing (or give \"normal\" and \"tangent\" vectors)");
+    c.by_vectors = vectors;
+    if (vectors) {
+      c.normal = vector3(required(v, ptr, "normal"), ptr + "/normal");
+      c.tangent = vector3(required(v, ptr, "tangent"), ptr + "/tangent");
+    } else {
+      c.normal_yaw = number(required(v, ptr, "normal_yaw_deg"), ptr + "/normal_yaw_deg");
+      c.normal_pitch = number_or(v, ptr, "normal_pitch_deg");
+      c.tangent_roll = number_or(v, ptr, "tangent_roll_deg");
+    }
+    return c;
+  }
+
+  Number non_negative(const json& obj, const std::string& ptr, const std::string& key) const {
+    Number n = number(required(obj, ptr, key), ptr + "/" + key);
+    if (n.value < 0) fail(ptr + "/" + key, fmt::format("must be >= 0 (got {})", n.text));
+    return n;
+  }
+
+  std::optional<Number> ratio_or_critical(const json& obj, const std::string& ptr, const std::string& key) const {
+    const json& v = required(obj, ptr, key);
+    if (v.is_string()) {
+      if (v.get<std::string>() == "critical") return std::nullopt;
+      fail(ptr + "/" + key, fmt::format("expected a number or \"critical\", got \"{}\"", v.get<std::string>()));
+    }
+    if (!v.is_number()) fail(ptr + "/" + key, fmt::format("expected a number or \"critical\", got {}", type_name(v)));
+    return number(v, ptr + "/" + key);
+  }
+
+  StrategySpec strategy(const json& v, const std::string& ptr) const {
+    if (!v.is_object()) fail(ptr, fmt::format("expected an object, got {}", type_name(v)));
+    const std::string name = string(required(v, ptr, "name"), ptr + "/name");
+    StrategySpec s;
+    s.path = display_path(ptr);
+    if (name == "pc-crash") {
+      object(v, ptr, {"name", "mu"});
+      s.kind = StrategySpec::Kind::pc_crash;
+      s.mu = non_negative(v, ptr, "mu");
+    } else if (name == "wach") {
+      object(v, ptr, {"name", "mu", "limit"});
+      s.kind = StrategySpec::Kind::wach;
+      s.mu = non_negative(v, ptr, "mu");
+      if (auto* l = optional(v, "limit")) {
+        const std::string limit = string(*l, ptr + "/limit");
+        if (limit == "gir") s.limit = WachLimit::gir;
+        else if (limit != "cir") fail(ptr + "/limit", fmt::format("expected \"cir\" or \"gir\", got \"{}\"", limit));
+      }
+    } else if (name == "brach") {
+      object(v, ptr, {"name", "mu_t", "mu_z"});
+      s.kind = StrategySpec::Kind::brach;
+      s.mu_t = ratio_or_critical(v, ptr, "mu_t");
+      s.mu_z = ratio_or_critical(v, ptr, "mu_z");
+    } else {
+      fail(ptr + "/name", fmt::format("unknown strategy \"{}\" (expected pc-crash, wach or brach)", name));
+    }
+    return s;
+  }
+
+  CaseSpec read() const {
+    const json& root = parsed_.doc;
+    object(root, "", {"name", "units", "vehicles", "contact", "restitution", "strategy"});
+    CaseSpec c;
+    if (auto* n = optional(root, "name")) c.name = string(*n, "/name");
+    if (auto* u = optional(root, "units")) {
+      const std::string units = string(*u, "/units");
+      if (units == "US") c.units = Units::US;
+      else if (units != "SI") fail("/units", fmt::format("unknown unit system \"{}\" (expected \"SI\" or \"US\")", units));
+    }
+    const json& vs = required(root, "", "vehicles");
+    if (!vs.is_array()) fail("/vehicles", fmt::format("expected an array of 2 vehicles, got {}", type_name(vs)));
+    if (vs.size() != 2) fail("/vehicles", fmt::format("expected 2 vehicles, got {}", vs.size()));
+    for (int i = 0; i < 2; ++i) c.vehicles[i] = vehicle(vs[i], "/vehicles/" + std::to_string(i));
+    c.contact = contact(required(root, "", "contact"), "/contact");
+    c.restitution = number(required(root, "", "restitution"), "/restitution");
+    if (c.restitution.value < 0 || c.restitution.value > 1)
+      fail("/restitution", fmt::format("must be in [0, 1] (got {})", c.restitution.text));
+    const json& st = required(root, "", "strategy");
+    if (st.is_array()) {
+      if (st.empty()) fail("/strategy", "empty array: give at least one strategy");
+      c.strategy_is_array = true;
+      for (std::size_t i = 0; i < st.size(); ++i) c.strategies.push_back(strategy(st[i], "/strategy/" + std::to_string(i)));
+    } else {
+      c.strategies.push_back(strategy(st, "/strategy"));
+    }
+    return c;
+  }
+
+ private:
+  const ParsedJson& parsed_;
+};
+
+}  // namespace
+
+StrategySpec read_strategy_option(const std::string& text, int index) {
+  std::string doc = text;
+  if (text.empty() || text.front() != '{') {
+    // name[:key=value,...] -> {"name": "...", "key": value}; values that are not JSON numbers are strings.
+    const auto colon = text.find(':');
+    doc = "{\"name\": " + nlohmann::json(text.substr(0, colon)).dump();
+    std::string rest = colon == std::string::npos ? "" : text.substr(colon + 1);
+    std::size_t pos = 0;
+    while (pos < rest.size()) {
+      const auto comma = rest.find(',', pos);
+      const std::string item = rest.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+      const auto eq = item.find('=');
+      const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
+      const bool is_number = !value.empty() && json::accept(value) && json::parse(value).is_number();
+      doc += ", " + nlohmann::json(key).dump() + ": " + (is_number ? value : nlohmann::json(value).dump());
+      pos = comma == std::string::npos ? rest.size() : comma + 1;
+    }
+    doc += "}";
+  }
+  const std::string label = "--strategy[" + std::to_string(index) + "]";
+  try {
+    const ParsedJson parsed = parse_json_with_literals(doc);
+    return Reader(parsed).strategy(parsed.doc, "");
+  } catch (const CaseError& e) {
+    throw CaseError(label + e.path.substr(1), e.what());
+  }
+}
+
+CaseSpec read_case(const std::string& json_text) {
+  const ParsedJson parsed = parse_json_with_literals(json_text);
+  return Reader(parsed).read();
+}
+
+}  // namespace impact3d::io

@@ -1,0 +1,110 @@
+// Every strategy is three linear constraints on P = (P_n, P_t, P_z). The direct engine writes them as
+// rows c . P = rhs and solves the 3x3 system; the closed forms of the paper are never used here, so
+// this engine is an independent reference for them.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <Eigen/LU>
+
+#include "impact3d/numeric/strategy.hpp"
+
+namespace impact3d::direct {
+
+template <typename Scalar>
+struct Row {
+  Vec3<Scalar> c;
+  Scalar rhs;
+};
+
+// What one collision fixes for every strategy: m', K and the initial relative velocity (contact axes).
+template <typename Scalar>
+struct Problem {
+  Scalar m_prime;
+  Mat3<Scalar> K;
+  Vec3<Scalar> V_ri;
+  Scalar restitution;
+  Scalar kappa;  // 2-norm condition number of K
+
+  // A direction computed from a 3x3 solve is noise once its magnitude is below the solve's forward
+  // error, about eps * kappa(K) * scale; 16 covers the few roundings of assembling the rows.
+  bool negligible(const Scalar& x, const Scalar& scale) const {
+    using std::abs;
+    return abs(x) <= Scalar(16) * std::numeric_limits<Scalar>::epsilon() * kappa * scale;
+  }
+};
+
+// The post-impact relative velocity along unit u takes the value target: u^T K P = m' (u.V_ri - target).
+template <typename Scalar>
+Row<Scalar> velocity_row(const Problem<Scalar>& p, const Vec3<Scalar>& u, const Scalar& target) {
+  return {p.K.transpose() * u, p.m_prime * (u.dot(p.V_ri) - target)};
+}
+
+// Poisson/kinetic restitution on the normal: V_rnf = -eps V_rni (the first of eqs 9, 17, 23).
+template <typename Scalar>
+Row<Scalar> restitution_row(const Problem<Scalar>& p, const Scalar& eps) {
+  return velocity_row(p, Vec3<Scalar>(Vec3<Scalar>::UnitX()), Scalar(-eps * p.V_ri.x()));
+}
+
+// No sliding along u at separation.
+template <typename Scalar>
+Row<Scalar> no_sliding_row(const Problem<Scalar>& p, const Vec3<Scalar>& u) {
+  return velocity_row(p, u, Scalar(0));
+}
+
+// Impulse ratio along u: u.P = mu P_n (eqs 16, 22, 24).
+template <typename Scalar>
+Row<Scalar> ratio_row(const Vec3<Scalar>& u, const Scalar& mu) {
+  return {Vec3<Scalar>(u - mu * Vec3<Scalar>::UnitX()), Scalar(0)};
+}
+
+// No impulse along w (the normal of a solution plane).
+template <typename Scalar>
+Row<Scalar> no_impulse_row(const Vec3<Scalar>& w) {
+  return {w, Scalar(0)};
+}
+
+template <typename Scalar>
+Vec3<Scalar> solve_rows(const std::array<Row<Scalar>, 3>& rows, const std::string& what) {
+  Mat3<Scalar> A;
+  Vec3<Scalar> b;
+  for (int k = 0; k < 3; ++k) {
+    A.row(k) = rows[k].c.transpose();
+    b(k) = rows[k].rhs;
+  }
+  Eigen::FullPivLU<Mat3<Scalar>> lu(A);
+  if (!lu.isInvertible()) throw SolveError(what + ": the constraints admit no unique impulse (singular system)");
+  return lu.solve(b);
+}
+
+// Unit vectors of a solution plane at angle phi from t towards z: u in the plane, w normal to it.
+template <typename Scalar>
+struct PlaneAxes {
+  Vec3<Scalar> u, w;
+};
+
+template <typename Scalar>
+PlaneAxes<Scalar> plane_axes(const Scalar& cos_phi, const Scalar& sin_phi) {
+  return {Vec3<Scalar>(Scalar(0), cos_phi, sin_phi), Vec3<Scalar>(Scalar(0), -sin_phi, cos_phi)};
+}
+
+// The ratio u.P / P_n at which sliding along u stops, on the plane (n, u): eq 19 (CIR) for the case's
+// restitution, eq 20 (GIR) for eps = 0.
+template <typename Scalar>
+Scalar plane_critical_ratio(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& eps,
+                            const std::string& what) {
+  const Vec3<Scalar> P = solve_rows<Scalar>({restitution_row(p, eps), no_sliding_row(p, ax.u), no_impulse_row(ax.w)}, what);
+  return ax.u.dot(P) / P.x();
+}
+
+// Impulse with ratio mu on the plane (n, u) and none along w (eqs 17-18, 22).
+template <typename Scalar>
+Vec3<Scalar> plane_impulse(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& mu,
+                           const std::string& what) {
+  return solve_rows<Scalar>({restitution_row(p, p.restitution), ratio_row(ax.u, mu), no_impulse_row(ax.w)}, what);
+}
+
+}  // namespace impact3d::direct

@@ -1,0 +1,48 @@
+// 3D extension of PC-Crash Full Impact / Sliding Impact (eqs 10-20).
+//
+// Full Impact when mu >= GIR = |P_cp,FI| / P_n,FI (eq 14; equal to eq 20 on the phi_FI plane), otherwise
+// Sliding Impact on the plane through n at phi_FI = atan2(P_z,FI, P_t,FI) (eq 15) with P_cp = mu P_n
+// (eqs 16-18). The CIR of that plane (eq 19) is reported beside the GIR.
+#pragma once
+
+#include <cmath>
+
+#include "impact3d/numeric/direct/full_impact.hpp"
+#include "impact3d/numeric/direct/limits.hpp"
+
+namespace impact3d::direct {
+
+template <typename Scalar>
+ImpulseSolution<Scalar> solve_pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec) {
+  using std::atan2;
+  using std::hypot;
+  ImpulseSolution<Scalar> out;
+  const Vec3<Scalar> P_fi = full_impact_impulse(p, p.restitution);
+  const Scalar P_cp = hypot(P_fi.y(), P_fi.z());
+  PlaneAxes<Scalar> ax;
+  if (p.negligible(P_cp, P_fi.norm())) {
+    ax = plane_axes(Scalar(1), Scalar(0));
+    out.warnings.push_back({WarningCode::plane_undefined,
+                            "phi_FI (eq 15) is undefined: the Full Impact has no contact-plane impulse; "
+                            "the t axis (phi_FI = 0) is used"});
+  } else {
+    ax = plane_axes(Scalar(P_fi.y() / P_cp), Scalar(P_fi.z() / P_cp));
+  }
+  out.plane_angle_deg = atan2(ax.u.z(), ax.u.y()) * Scalar(180) / pi<Scalar>();
+  const Scalar gir = P_cp / P_fi.x();
+  out.gir = gir;
+  out.cir = plane_critical_ratio(p, ax, p.restitution, "pc-crash CIR (eq 19)");
+  flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
+  if (spec.mu >= gir) {
+    out.regime = Regime::full;
+    out.mu = gir;
+    out.P_C = P_fi;
+  } else {
+    out.regime = Regime::sliding;
+    out.mu = spec.mu;
+    out.P_C = plane_impulse(p, ax, spec.mu, "pc-crash sliding impact (eq 18)");
+  }
+  return out;
+}
+
+}  // namespace impact3d::direct

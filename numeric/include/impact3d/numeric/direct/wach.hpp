@@ -1,0 +1,41 @@
+// Wach: the solution plane contains n and the initial sliding velocity (eq 21), P_t' = mu P_n (eq 22),
+// P_z' = 0, and mu capped at the plane's CIR (eq 19, Wach) or GIR (eq 20, Virtual CRASH guide).
+#pragma once
+
+#include <cmath>
+
+#include "impact3d/numeric/direct/constraints.hpp"
+#include "impact3d/numeric/direct/limits.hpp"
+
+namespace impact3d::direct {
+
+template <typename Scalar>
+ImpulseSolution<Scalar> solve_wach(const Problem<Scalar>& p, const Wach<Scalar>& spec) {
+  using std::atan2;
+  using std::hypot;
+  ImpulseSolution<Scalar> out;
+  const Scalar V_cp = hypot(p.V_ri.y(), p.V_ri.z());
+  PlaneAxes<Scalar> ax;
+  if (p.negligible(V_cp, p.V_ri.norm())) {
+    ax = plane_axes(Scalar(1), Scalar(0));
+    out.warnings.push_back({WarningCode::plane_undefined,
+                            "phi (eq 21) is undefined: there is no initial sliding velocity; "
+                            "the t axis (phi = 0) is used"});
+  } else {
+    ax = plane_axes(Scalar(p.V_ri.y() / V_cp), Scalar(p.V_ri.z() / V_cp));
+  }
+  out.plane_angle_deg = atan2(ax.u.z(), ax.u.y()) * Scalar(180) / pi<Scalar>();
+  out.cir = plane_critical_ratio(p, ax, p.restitution, "wach CIR (eq 19)");
+  out.gir = plane_critical_ratio(p, ax, Scalar(0), "wach GIR (eq 20)");
+  flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
+  flag_if_not_finite(out, *out.gir, "GIR (eq 20)");
+  const Scalar limit = spec.limit == WachLimit::cir ? *out.cir : *out.gir;
+  const bool capped = spec.mu >= limit;
+  out.regime = capped ? Regime::capped : Regime::sliding;
+  out.mu = capped ? limit : spec.mu;
+  flag_if_negative_ratio(out, *out.mu, "impulse ratio");
+  out.P_C = plane_impulse(p, ax, *out.mu, "wach (eqs 18, 22)");
+  return out;
+}
+
+}  // namespace impact3d::direct

@@ -1,0 +1,164 @@
+// What an impulse does to the two vehicles: post-impact states, Delta-V and its principal direction of
+// force, relative velocity and sliding after, swerve, kinetic energy, and the physical warnings.
+// Everything here is computed from the states, not from K, so that it also checks the engines.
+#pragma once
+
+#include <Eigen/Cholesky>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/strategy.hpp"
+
+namespace impact3d {
+
+template <typename Scalar>
+RigidBody<Scalar> apply_impulse(const RigidBody<Scalar>& b, const Vec3<Scalar>& P_W) {
+  RigidBody<Scalar> a = b;
+  a.v_W += P_W / b.mass;
+  const Vec3<Scalar> P_B = b.R_WB.transpose() * P_W;
+  a.w_B += b.J_B.llt().solve(b.p_CgIc_B.cross(P_B));
+  return a;
+}
+
+template <typename Scalar>
+struct BodyChange {
+  Vec3<Scalar> dv_W;  // change of CG velocity, world axes
+  Scalar dv;          // its magnitude
+  // Principal direction of force on the vehicle, degrees clockwise from straight ahead seen from above
+  // (0 = frontal, 90 = right side, 270 = left side), from the body-axes x-y part of Delta-V; and its
+  // clock position (12 = frontal). Empty when Delta-V has no body x-y part.
+  std::optional<Scalar> pdof_deg;
+  std::optional<int> clock;
+};
+
+template <typename Scalar>
+Scalar degrees(const Scalar& rad) {
+  return rad * Scalar(180) / pi<Scalar>();
+}
+
+template <typename Scalar>
+BodyChange<Scalar> body_change(const RigidBody<Scalar>& before, const RigidBody<Scalar>& after) {
+  using std::atan2;
+  using std::floor;
+  using std::hypot;
+  BodyChange<Scalar> c;
+  c.dv_W = after.v_W - before.v_W;
+  c.dv = c.dv_W.norm();
+  const Vec3<Scalar> dv_B = before.R_WB.transpose() * c.dv_W;
+  if (hypot(dv_B.x(), dv_B.y()) > Scalar(16) * std::numeric_limits<Scalar>::epsilon() * c.dv) {
+    // The force is along Delta-V; it comes from the side opposite to it.
+    Scalar deg = degrees(Scalar(atan2(dv_B.y(), Scalar(-dv_B.x()))));
+    if (deg < Scalar(0)) deg += Scalar(360);
+    c.pdof_deg = deg;
+    int hour = static_cast<int>(floor(deg / Scalar(30) + ratio<Scalar>(1, 2))) % 12;
+    c.clock = hour == 0 ? 12 : hour;
+  }
+  return c;
+}
+
+// How the post-impact relative velocity along one axis compares with the initial one.
+enum class AxisChange { none, started, continued, stopped, reversed };
+
+inline const char* axis_change_name(AxisChange c) {
+  switch (c) {
+    case AxisChange::none: return "none";
+    case AxisChange::started: return "started";
+    case AxisChange::continued: return "continued";
+    case AxisChange::stopped: return "stopped";
+    case AxisChange::reversed: return "reversed";
+  }
+  return "?";
+}
+
+template <typename Scalar>
+AxisChange axis_change(const Scalar& before, const Scalar& after, const Scalar& tol) {
+  using std::abs;
+  const bool was = abs(before) > tol, is = abs(after) > tol;
+  if (!was) return is ? AxisChange::started : AxisChange::none;
+  if (!is) return AxisChange::stopped;
+  return (before > Scalar(0)) == (after > Scalar(0)) ? AxisChange::continued : AxisChange::reversed;
+}
+
+template <typename Scalar>
+struct Solution {
+  ImpulseSolution<Scalar> impulse;
+  Vec3<Scalar> P_W;                            // impulse on vehicle 1, world axes
+  std::array<RigidBody<Scalar>, 2> after;      // post-impact states
+  std::array<BodyChange<Scalar>, 2> change;
+  Vec3<Scalar> V_ri, V_rf;                     // relative velocity at the impulse centre, contact axes
+  Scalar velocity_roundoff;                    // post-impact relative velocities below this are zero
+  Scalar restitution_effective;                // -V_rnf / V_rni
+  Scalar sliding_before, sliding_after;        // |(V_rt, V_rz)|
+  std::optional<Scalar> swerve_deg;            // signed angle from initial to final sliding, t towards z
+  std::optional<Scalar> swerve_speed;          // final sliding across the initial sliding direction
+  AxisChange t_change, z_change;
+  std::string volume;                          // paper Figure 2: A-D, or the plane the solution lies on
+  Scalar energy_before, energy_after, energy_loss;
+  std::vector<Warning> warnings;
+};
+
+// kappa: condition number of K, which bounds how far a computed zero can stray from zero.
+template <typename Scalar>
+Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scalar>& imp, const Scalar& kappa) {
+  using std::abs;
+  using std::atan2;
+  using std::hypot;
+  const Scalar eps = std::numeric_limits<Scalar>::epsilon();
+  Solution<Scalar> out;
+  out.impulse = imp;
+  out.warnings = imp.warnings;
+  out.P_W = s.R_WC * imp.P_C;
+  out.after = {apply_impulse(s.body[0], out.P_W), apply_impulse(s.body[1], Vec3<Scalar>(-out.P_W))};
+  for (int i = 0; i < 2; ++i) out.change[i] = body_change(s.body[i], out.after[i]);
+
+  Scene<Scalar> s_after = s;
+  s_after.body = out.after;
+  out.V_ri = relative_velocity_C(s);
+  out.V_rf = relative_velocity_C(s_after);
+  // Post-impact relative velocity is a difference of point velocities of size `scale`, through a
+  // solve of condition kappa: below `tol` it is zero to the precision of the computation.
+  const Scalar scale = v_Ic_W(s.body[0]).norm() + v_Ic_W(s.body[1]).norm() + out.V_ri.norm();
+  const Scalar tol = Scalar(16) * eps * kappa * scale;
+  out.velocity_roundoff = tol;
+
+  out.restitution_effective = -out.V_rf.x() / out.V_ri.x();
+  out.sliding_before = hypot(out.V_ri.y(), out.V_ri.z());
+  out.sliding_after = hypot(out.V_rf.y(), out.V_rf.z());
+  if (out.sliding_before > tol) {
+    const Scalar cross = out.V_ri.y() * out.V_rf.z() - out.V_ri.z() * out.V_rf.y();
+    const Scalar dot = out.V_ri.y() * out.V_rf.y() + out.V_ri.z() * out.V_rf.z();
+    out.swerve_speed = cross / out.sliding_before;
+    if (out.sliding_after > tol) out.swerve_deg = degrees(Scalar(atan2(cross, dot)));
+  }
+  out.t_change = axis_change(out.V_ri.y(), out.V_rf.y(), tol);
+  out.z_change = axis_change(out.V_ri.z(), out.V_rf.z(), tol);
+  const bool separating = out.V_rf.x() < -tol, penetrating = out.V_rf.x() > tol;
+  if (!separating && !penetrating)
+    out.volume = "max-compression plane";
+  else if (out.t_change == AxisChange::stopped || out.t_change == AxisChange::none)
+    out.volume = "t no-sliding plane";
+  else if (out.t_change == AxisChange::started)
+    out.volume = "none (no initial t sliding)";
+  else if (out.t_change == AxisChange::continued)
+    out.volume = separating ? "A" : "D";
+  else
+    out.volume = separating ? "B" : "C";
+
+  out.energy_before = kinetic_energy(s.body[0]) + kinetic_energy(s.body[1]);
+  out.energy_after = kinetic_energy(out.after[0]) + kinetic_energy(out.after[1]);
+  out.energy_loss = out.energy_before - out.energy_after;
+
+  if (!(imp.P_C.x() > Scalar(0)))
+    out.warnings.push_back({WarningCode::tensile_normal_impulse,
+                            "normal impulse P_n <= 0: the constraints demand a pulling contact"});
+  // The loss is a difference of energies of size energy_before; at eps = 1 it is zero in exact arithmetic.
+  if (out.energy_loss < -Scalar(16) * eps * kappa * out.energy_before)
+    out.warnings.push_back({WarningCode::energy_gained, "kinetic energy gained: loss < 0"});
+  return out;
+}
+
+}  // namespace impact3d

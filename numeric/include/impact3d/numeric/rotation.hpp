@@ -1,0 +1,85 @@
+// Rotations as the case-format contract defines them: active, intrinsic z-y'-x'', angles in degrees.
+#pragma once
+
+#include <cmath>
+
+#include "impact3d/numeric/types.hpp"
+
+namespace impact3d {
+
+template <typename Scalar>
+struct SinCos {
+  Scalar s, c;
+};
+
+// sin and cos of an angle in degrees, reduced by quarter turns first so that multiples of 90 degrees
+// give exact 0 and +-1 (cos(pi/2) in floating point is 6e-17, which would invent a vertical sliding
+// velocity in every level, right-angle case).
+template <typename Scalar>
+SinCos<Scalar> sin_cos_deg(const Scalar& deg) {
+  using std::cos;
+  using std::floor;
+  using std::fmod;
+  using std::sin;
+  const Scalar quarter(90);
+  Scalar turns = floor(deg / quarter + ratio<Scalar>(1, 2));
+  Scalar rest = deg - turns * quarter;  // in [-45, 45]
+  Scalar q = fmod(turns, Scalar(4));
+  if (q < Scalar(0)) q += Scalar(4);
+  const Scalar rad = rest * pi<Scalar>() / Scalar(180);
+  const Scalar s = rest == Scalar(0) ? Scalar(0) : sin(rad);
+  const Scalar c = rest == Scalar(0) ? Scalar(1) : cos(rad);
+  if (q == Scalar(0)) return {s, c};
+  if (q == Scalar(1)) return {c, -s};
+  if (q == Scalar(2)) return {-s, -c};
+  return {-c, s};
+}
+
+template <typename Scalar>
+Mat3<Scalar> rot_x(const SinCos<Scalar>& a) {
+  Mat3<Scalar> r;
+  r << Scalar(1), Scalar(0), Scalar(0),  //
+      Scalar(0), a.c, -a.s,              //
+      Scalar(0), a.s, a.c;
+  return r;
+}
+
+template <typename Scalar>
+Mat3<Scalar> rot_y(const SinCos<Scalar>& a) {
+  Mat3<Scalar> r;
+  r << a.c, Scalar(0), a.s,         //
+      Scalar(0), Scalar(1), Scalar(0),  //
+      -a.s, Scalar(0), a.c;
+  return r;
+}
+
+template <typename Scalar>
+Mat3<Scalar> rot_z(const SinCos<Scalar>& a) {
+  Mat3<Scalar> r;
+  r << a.c, -a.s, Scalar(0),  //
+      a.s, a.c, Scalar(0),    //
+      Scalar(0), Scalar(0), Scalar(1);
+  return r;
+}
+
+// Rz(yaw) * Ry(pitch) * Rx(roll): maps body (or contact) coordinates to world coordinates.
+template <typename Scalar>
+Mat3<Scalar> rotation_zyx_deg(const Scalar& yaw, const Scalar& pitch, const Scalar& roll) {
+  return rot_z(sin_cos_deg(yaw)) * rot_y(sin_cos_deg(pitch)) * rot_x(sin_cos_deg(roll));
+}
+
+// Contact frame from a normal and a tangent given in world axes: n normalised, t made orthogonal to n
+// (Gram-Schmidt) and normalised, z = n x t. Columns of the result are n, t, z. The caller has checked
+// that n is non-zero and t is not parallel to n.
+template <typename Scalar>
+Mat3<Scalar> contact_frame_from_vectors(const Vec3<Scalar>& normal, const Vec3<Scalar>& tangent) {
+  const Vec3<Scalar> n = normal.normalized();
+  const Vec3<Scalar> t = (tangent - n * n.dot(tangent)).normalized();
+  Mat3<Scalar> r;
+  r.col(0) = n;
+  r.col(1) = t;
+  r.col(2) = n.cross(t);
+  return r;
+}
+
+}  // namespace impact3d

@@ -1,0 +1,36 @@
+// Fixed-size Eigen types and exact constants shared by every algorithm of impact3d::numeric.
+#pragma once
+
+#include <Eigen/Core>
+#include <boost/math/constants/constants.hpp>
+
+namespace impact3d {
+
+template <typename Scalar>
+using Vec3 = Eigen::Matrix<Scalar, 3, 1>;
+template <typename Scalar>
+using Mat3 = Eigen::Matrix<Scalar, 3, 3>;
+
+// A rational constant built in the target type, so that no constant is rounded through double on a
+// long double or multiprecision path.
+template <typename Scalar>
+Scalar ratio(long long p, long long q) {
+  return Scalar(p) / Scalar(q);
+}
+
+template <typename Scalar>
+Scalar pi() {
+  return boost::math::constants::pi<Scalar>();
+}
+
+// [r]x: the matrix with skew(r) * p == r x p.
+template <typename Scalar>
+Mat3<Scalar> skew(const Vec3<Scalar>& r) {
+  Mat3<Scalar> s;
+  s << Scalar(0), -r.z(), r.y(),  //
+      r.z(), Scalar(0), -r.x(),   //
+      -r.y(), r.x(), Scalar(0);
+  return s;
+}
+
+}  // namespace impact3d

@@ -1,0 +1,9 @@
+// Explicit instantiations for the default scalar types.
+#include "impact3d/numeric/analysis.hpp"
+
+namespace impact3d {
+
+template Analysis<double> analyze(const Scene<double>&, const std::vector<Strategy<double>>&);
+template Analysis<long double> analyze(const Scene<long double>&, const std::vector<Strategy<long double>>&);
+
+}  // namespace impact3d
