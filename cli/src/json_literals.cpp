@@ -20,6 +20,11 @@ std::string escape_token(const std::string& key) {
   return out;
 }
 
+std::string strip_exception_prefix(const std::string& what) {
+  const auto close = what.find("] ");
+  return close == std::string::npos ? what : what.substr(close + 2);
+}
+
 // Walks the same text as json::parse and records where each number stands and how it was written.
 class LiteralCollector : public nlohmann::json_sax<json> {
  public:
@@ -39,8 +44,8 @@ class LiteralCollector : public nlohmann::json_sax<json> {
   }
   bool key(string_t& k) override {
     auto& f = frames_.back();
-    if (!f.keys.insert(k).second) throw CaseError(display_path(path() + "/" + escape_token(k)), "duplicate key");
     f.key = k;
+    if (!f.keys.insert(k).second) throw CaseError(display_path(location()), "duplicate key");
     return true;
   }
   bool end_object() override {
@@ -56,7 +61,11 @@ class LiteralCollector : public nlohmann::json_sax<json> {
     frames_.pop_back();
     return true;
   }
-  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+  bool parse_error(std::size_t, const std::string& token, const nlohmann::detail::exception& e) override {
+    // 406: a number literal beyond the range of double, e.g. 1e400.
+    if (e.id == 406) throw CaseError(display_path(location()), "not a finite number (" + token + ")");
+    throw CaseError(display_path(location()), "invalid JSON: " + strip_exception_prefix(e.what()));
+  }
 
  private:
   struct Frame {
@@ -83,12 +92,17 @@ class LiteralCollector : public nlohmann::json_sax<json> {
     for (const auto& f : frames_) p += "/" + (f.object ? escape_token(f.key) : std::to_string(f.index));
     return p;
   }
+  // Where the value being read stands: the last key of the innermost object, or the next array index.
+  std::string location() const {
+    std::string p;
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+      const auto& f = frames_[i];
+      const long index = i + 1 == frames_.size() ? f.index + 1 : f.index;
+      p += "/" + (f.object ? escape_token(f.key) : std::to_string(index));
+    }
+    return p;
+  }
 };
-
-std::string strip_exception_prefix(const std::string& what) {
-  const auto close = what.find("] ");
-  return close == std::string::npos ? what : what.substr(close + 2);
-}
 
 }  // namespace
 
@@ -108,15 +122,12 @@ std::string display_path(const std::string& pointer) {
 }
 
 ParsedJson parse_json_with_literals(const std::string& text) {
+  // The collector reads first: it reports syntax errors with the path where they stand.
   ParsedJson out;
-  try {
-    out.doc = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw CaseError("$", "invalid JSON: " + strip_exception_prefix(e.what()));
-  }
   LiteralCollector collector;
   json::sax_parse(text, &collector);
   out.literal = std::move(collector.literal);
+  out.doc = json::parse(text);
   return out;
 }
 

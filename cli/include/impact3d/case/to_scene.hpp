@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 
 #include "impact3d/case/case_spec.hpp"
+#include "impact3d/case/present.hpp"
 #include "impact3d/case/scalar_text.hpp"
 #include "impact3d/numeric/kinematics.hpp"
 #include "impact3d/numeric/rotation.hpp"
@@ -61,7 +62,8 @@ Scene<Scalar> to_scene(const CaseSpec& c) {
   const Scalar V_rn = relative_velocity_C(s).x();
   if (!(V_rn > Scalar(0)))
     throw CaseError("$.vehicles", "not approaching: the relative normal velocity at the impulse centre is " +
-                                      scalar_to_text(Scalar(V_rn / f.velocity), 6) +
+                                      scalar_to_text(Scalar(V_rn / f.velocity), 6) + " " +
+                                      unit_label(c.units, "velocity") +
                                       " (must be > 0; the normal points into vehicle 1)");
   return s;
 }

@@ -1,0 +1,83 @@
+// The case-file reader: literals kept exactly, defaults, shorthands and command-line strategies.
+#include <catch2/catch.hpp>
+
+#include "impact3d/case/json_literals.hpp"
+#include "support.hpp"
+
+using namespace impact3d;
+using namespace impact3d::test;
+
+namespace {
+
+std::string minimal(const std::string& contact = R"("contact": {"normal_yaw_deg": 90})",
+                    const std::string& strategy = R"({"name": "pc-crash", "mu": 0.4})") {
+  return R"({"vehicles": [
+      {"mass": 1500, "inertia": {"Ixx": 500, "Iyy": 2000, "Izz": 2200}, "velocity": [10.10000000000000000001, 0, 0],
+       "impulse_center": [0.5, -0.9, 0]},
+      {"mass": 2000, "inertia": [[700, 0, -50], [0, 3000, 0], [-50, 0, 3300]], "orientation_deg": {"yaw": 90},
+       "velocity": [0, 12, 0], "impulse_center": [2.4, 0, 0]}],
+    )" + contact + R"(, "restitution": 0.1, "strategy": )" + strategy + "}";
+}
+
+}  // namespace
+
+TEST_CASE("number literals are kept as written", "[reader]") {
+  const io::CaseSpec c = io::read_case(minimal());
+  CHECK(c.vehicles[0].velocity[0].text == "10.10000000000000000001");
+  CHECK(c.restitution.text == "0.1");
+  CHECK(c.vehicles[0].mass.text == "1500");
+  CHECK(c.vehicles[1].inertia[0][2].text == "-50");
+  CHECK(c.vehicles[0].inertia[0][1].text == "0");  // shorthand: zero products of inertia
+}
+
+TEST_CASE("defaults: SI, zero orientation and angular velocity, contact pitch and roll", "[reader]") {
+  const io::CaseSpec c = io::read_case(minimal());
+  CHECK(c.units == Units::SI);
+  CHECK(c.vehicles[0].yaw.value == 0.0);
+  CHECK(c.vehicles[0].angular_velocity[2].value == 0.0);
+  CHECK(c.contact.normal_pitch.value == 0.0);
+  CHECK(!c.strategy_is_array);
+}
+
+TEST_CASE("a contact frame given by vectors equals the one given by angles", "[reader]") {
+  // normal_yaw 90, pitch 0, roll 0: n = +y, t = -x.
+  const auto by_angles = io::to_scene<double>(io::read_case(minimal()));
+  const auto by_vectors =
+      io::to_scene<double>(io::read_case(minimal(R"("contact": {"normal": [0, 2, 0], "tangent": [-1, 0.3, 0]})")));
+  CHECK((by_angles.R_WC - by_vectors.R_WC).cwiseAbs().maxCoeff() <= 4 * eps);
+}
+
+TEST_CASE("strategy arrays and brach critical ratios", "[reader]") {
+  const io::CaseSpec c = io::read_case(minimal(R"("contact": {"normal_yaw_deg": 90})",
+                                               R"([{"name": "wach", "mu": 0.4, "limit": "gir"},
+                                                   {"name": "brach", "mu_t": "critical", "mu_z": -0.05}])"));
+  REQUIRE(c.strategies.size() == 2);
+  CHECK(c.strategies[0].kind == io::StrategySpec::Kind::wach);
+  CHECK(c.strategies[0].limit == WachLimit::gir);
+  CHECK(!c.strategies[1].mu_t);
+  CHECK(c.strategies[1].mu_z->text == "-0.05");
+}
+
+TEST_CASE("command-line strategies use the same rules", "[reader]") {
+  const auto s = io::read_strategy_option("wach:mu=0.35,limit=gir", 0);
+  CHECK(s.kind == io::StrategySpec::Kind::wach);
+  CHECK(s.mu.text == "0.35");
+  CHECK(s.limit == WachLimit::gir);
+  const auto b = io::read_strategy_option("brach:mu_t=critical,mu_z=0.1", 1);
+  CHECK(!b.mu_t);
+  CHECK(b.mu_z->text == "0.1");
+  const auto j = io::read_strategy_option(R"({"name": "pc-crash", "mu": 0.5})", 2);
+  CHECK(j.mu.text == "0.5");
+  try {
+    io::read_strategy_option("pc-crash:mu=-1", 3);
+    FAIL("accepted a negative mu");
+  } catch (const io::CaseError& e) {
+    CHECK(e.line() == "--strategy[3].mu: must be >= 0 (got -1)");
+  }
+}
+
+TEST_CASE("JSON pointers are displayed as JSON paths", "[reader]") {
+  CHECK(io::display_path("") == "$");
+  CHECK(io::display_path("/vehicles/0/mass") == "$.vehicles[0].mass");
+  CHECK(io::display_path("/a~1b/c~0d") == "$.a/b.c~d");
+}

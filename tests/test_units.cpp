@@ -1,0 +1,69 @@
+// US and SI versions of the same case give the same physics. The SI twin is made here with the exact
+// definitions typed in independently of units.hpp.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "support.hpp"
+
+using namespace impact3d;
+using namespace impact3d::test;
+
+namespace {
+
+const double lb = 0.45359237, ft = 0.3048, mph = 0.44704, g0 = 9.80665;
+const double lbf = lb * g0, slug_ft2 = lbf * ft, deg = M_PI / 180;
+
+void convert(io::Number& n, double factor) {
+  n.value *= factor;
+  n.text = io::scalar_to_text(n.value);
+}
+
+io::CaseSpec si_twin(io::CaseSpec c) {
+  c.units = Units::SI;
+  for (auto& v : c.vehicles) {
+    convert(v.mass, lb);
+    for (auto& row : v.inertia)
+      for (auto& x : row) convert(x, slug_ft2);
+    for (auto& x : v.velocity) convert(x, mph);
+    for (auto& x : v.angular_velocity) convert(x, deg);
+    for (auto& x : v.impulse_center) convert(x, ft);
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("the US example and its SI twin give the same physics and consistent output", "[units]") {
+  const io::CaseSpec us = load_spec(example("us_pickup_into_sedan.json"));
+  REQUIRE(us.units == Units::US);
+  const io::CaseSpec si = si_twin(us);
+  const auto a = analyze(io::to_scene<double>(us), io::to_strategies<double>(us));
+  const auto b = analyze(io::to_scene<double>(si), io::to_strategies<double>(si));
+  // Each converted input is rounded once (here and in the library, in different orders), so inputs
+  // differ by an eps or two; results move by that times kappa(K) and a few roundings more.
+  const double tol = 64 * eps * a.kappa;
+  CHECK((a.K - b.K).norm() <= tol * a.K.norm());
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) {
+    CHECK((a.solutions[k].impulse.P_C - b.solutions[k].impulse.P_C).norm() <= tol * a.solutions[k].impulse.P_C.norm());
+    CHECK(a.solutions[k].energy_loss == Approx(b.solutions[k].energy_loss).epsilon(tol));
+  }
+
+  // Output in the case's units: lbf s, mph, deg/s, ft lbf.
+  const auto ju = nlohmann::json::parse(io::result_json(us, a, "double"));
+  const auto js = nlohmann::json::parse(io::result_json(si, b, "double"));
+  CHECK(ju["units"] == "US");
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) {
+    const auto &ru = ju["results"][k], &rs = js["results"][k];
+    for (int c = 0; c < 3; ++c) {
+      CHECK(ru["impulse"]["contact"][c].get<double>() * lbf ==
+            Approx(rs["impulse"]["contact"][c].get<double>()).epsilon(tol).margin(tol * a.solutions[k].impulse.P_C.norm()));
+      CHECK(ru["vehicles"][0]["velocity"][c].get<double>() * mph ==
+            Approx(rs["vehicles"][0]["velocity"][c].get<double>()).epsilon(tol).margin(tol * 30));
+      CHECK(ru["vehicles"][1]["angular_velocity"][c].get<double>() * deg ==
+            Approx(rs["vehicles"][1]["angular_velocity"][c].get<double>()).epsilon(tol).margin(tol));
+    }
+    CHECK(ru["energy"]["loss"].get<double>() * slug_ft2 == Approx(rs["energy"]["loss"].get<double>()).epsilon(tol));
+  }
+}
