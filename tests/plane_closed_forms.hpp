@@ -21,6 +21,14 @@ inline PlaneCoefficients plane_coefficients(const M3& K, const V3& V_ri, double 
   return {Kp(0, 0), Kp(1, 0), Kp(0, 1), Kp(1, 1), (c * V_ri.y() + s * V_ri.z()) / V_ri.x()};
 }
 
+// Contact-plane components of v along and across the direction at angle phi (radians) from t to z.
+struct InPlane {
+  double along, across;
+};
+inline InPlane plane_components(double phi, const V3& v) {
+  return {std::cos(phi) * v.y() + std::sin(phi) * v.z(), -std::sin(phi) * v.y() + std::cos(phi) * v.z()};
+}
+
 // eq 19
 inline double eq19_cir(const PlaneCoefficients& k, double e) {
   return (k.r * k.a1 - (1 + e) * k.a2) / ((1 + e) * k.b2 - k.r * k.b1);

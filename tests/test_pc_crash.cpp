@@ -82,8 +82,7 @@ TEST_CASE("at mu = CIR the sliding along the phi_FI plane vanishes", "[pc-crash]
     const double cir = *a.solutions[0].impulse.cir, gir = *a.solutions[0].impulse.gir;
     if (!(cir > 0 && cir < gir)) continue;
     const auto sol = solve_one(s, PcCrash<double>{cir});
-    const double phi = *sol.impulse.plane_angle_deg * M_PI / 180;
-    const double in_plane = std::cos(phi) * sol.V_rf.y() + std::sin(phi) * sol.V_rf.z();
+    const double in_plane = plane_components(*sol.impulse.plane_angle_deg * M_PI / 180, sol.V_rf).along;
     CHECK(std::abs(in_plane) <= 16 * eps * a.kappa * velocity_scale(s));
   }
 }

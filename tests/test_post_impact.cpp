@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "support.hpp"
+#include "plane_closed_forms.hpp"
 
 using namespace impact3d;
 using namespace impact3d::test;
@@ -66,9 +66,7 @@ TEST_CASE("swerve: the angle and the across-component of the final sliding", "[s
     const auto& sol = a.solutions[0];
     REQUIRE(sol.swerve_speed);
     // Rotate the initial sliding onto +t: the final sliding's components are then (along, across).
-    const double phi = std::atan2(sol.V_ri.z(), sol.V_ri.y());
-    const double along = std::cos(phi) * sol.V_rf.y() + std::sin(phi) * sol.V_rf.z();
-    const double across = -std::sin(phi) * sol.V_rf.y() + std::cos(phi) * sol.V_rf.z();
+    const auto [along, across] = plane_components(std::atan2(sol.V_ri.z(), sol.V_ri.y()), sol.V_rf);
     // Both sides rotate the same post-impact velocity, whose error is the solve's (eps kappa scale);
     // an angle then errs by that over the final sliding speed (radians), twice for two evaluations.
     const double vtol = 16 * eps * a.kappa * velocity_scale(s);

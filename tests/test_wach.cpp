@@ -7,6 +7,17 @@
 using namespace impact3d;
 using namespace impact3d::test;
 
+namespace {
+
+// Wach with mu above the plane's limit, so that the cap applies.
+Analysis<double> capped_wach(const Scene<double>& s, WachLimit limit) {
+  const auto& imp = solve_one(s, Wach<double>{0.0, limit}).impulse;
+  const double value = limit == WachLimit::cir ? *imp.cir : *imp.gir;
+  return analyze(s, {Wach<double>{std::max(value, 0.0) + 1.0, limit}});
+}
+
+}  // namespace
+
 TEST_CASE("Wach's plane is at phi = atan2(V_rzi, V_rti) with P_t' = mu P_n and P_z' = 0", "[wach]") {
   std::mt19937_64 g(71);
   for (int n = 0; n < 300; ++n) {
@@ -32,13 +43,10 @@ TEST_CASE("Wach capped at its CIR leaves only out-of-plane sliding (swerve)", "[
   int swerving = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
-    const double cir = *solve_one(s, Wach<double>{0.0, WachLimit::cir}).impulse.cir;
-    const auto a = analyze(s, {Wach<double>{std::max(cir, 0.0) + 1.0, WachLimit::cir}});
+    const auto a = capped_wach(s, WachLimit::cir);
     const auto& sol = a.solutions[0];
     REQUIRE(sol.impulse.regime == Regime::capped);
-    const double phi = *sol.impulse.plane_angle_deg * M_PI / 180;
-    const double along = std::cos(phi) * sol.V_rf.y() + std::sin(phi) * sol.V_rf.z();
-    const double across = -std::sin(phi) * sol.V_rf.y() + std::cos(phi) * sol.V_rf.z();
+    const auto [along, across] = plane_components(*sol.impulse.plane_angle_deg * M_PI / 180, sol.V_rf);
     const double tol = 16 * eps * a.kappa * velocity_scale(s);
     CHECK(std::abs(along) <= tol);
     // What is left is the swerve: sliding across the initial direction, as the report computes it.
@@ -53,13 +61,11 @@ TEST_CASE("Wach capped at its GIR reverses in-plane sliding by eps, like Full Im
   std::mt19937_64 g(73);
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
-    const double gir = *solve_one(s, Wach<double>{0.0, WachLimit::gir}).impulse.gir;
-    const auto a = analyze(s, {Wach<double>{std::max(gir, 0.0) + 1.0, WachLimit::gir}});
+    const auto a = capped_wach(s, WachLimit::gir);
     const auto& sol = a.solutions[0];
     REQUIRE(sol.impulse.regime == Regime::capped);
     const double phi = *sol.impulse.plane_angle_deg * M_PI / 180;
-    const double along_i = std::cos(phi) * sol.V_ri.y() + std::sin(phi) * sol.V_ri.z();
-    const double along_f = std::cos(phi) * sol.V_rf.y() + std::sin(phi) * sol.V_rf.z();
+    const double along_i = plane_components(phi, sol.V_ri).along, along_f = plane_components(phi, sol.V_rf).along;
     CHECK(along_f == Approx(-s.restitution * along_i).margin(16 * eps * a.kappa * velocity_scale(s)));
   }
 }
