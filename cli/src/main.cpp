@@ -24,7 +24,7 @@ std::string read_file(const std::string& path) {
 }
 
 int solve(const std::string& case_path, const std::string& format, const std::vector<std::string>& strategies,
-          int digits) {
+          int digits, const std::string& engine_name) {
   using namespace impact3d;
   std::string output;
   try {
@@ -35,7 +35,8 @@ int solve(const std::string& case_path, const std::string& format, const std::ve
         spec.strategies.push_back(io::read_strategy_option(strategies[i], static_cast<int>(i)));
     }
     const Scene<double> scene = io::to_scene<double>(spec);
-    const Analysis<double> a = analyze(scene, io::to_strategies<double>(spec));
+    const Engine engine = engine_name == "direct" ? Engine::direct : Engine::generated;
+    const Analysis<double> a = analyze(scene, io::to_strategies<double>(spec), engine);
     output = format == "json" ? io::result_json(spec, a, "double") : cli::report_text(spec, a, "double", digits);
   } catch (const io::CaseError& e) {
     std::fprintf(stderr, "impact3d: error: %s: %s\n", case_path.c_str(), e.line().c_str());
@@ -60,6 +61,7 @@ int main(int argc, char** argv) {
   std::string case_path, format = "text";
   std::vector<std::string> strategies;
   int digits = 10;
+  std::string engine = "generated";
   solve_cmd->add_option("case", case_path, "case file (JSON)")->required();
   solve_cmd->add_option("--format", format, "text report or contract JSON")->check(CLI::IsMember({"text", "json"}));
   solve_cmd->add_option("--strategy", strategies,
@@ -67,6 +69,9 @@ int main(int argc, char** argv) {
                         "brach:mu_t=critical,mu_z=0 (repeatable)");
   solve_cmd->add_option("--digits", digits, "significant digits in the text report (JSON always prints all)")
       ->check(CLI::Range(1, 40));
+  solve_cmd->add_option("--engine", engine,
+                        "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
+      ->check(CLI::IsMember({"generated", "direct"}));
   CLI11_PARSE(app, argc, argv);
-  return solve(case_path, format, strategies, digits);
+  return solve(case_path, format, strategies, digits, engine);
 }

@@ -56,8 +56,9 @@ std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   const auto& f = p.f;
   const auto U = [&](const char* q) { return std::string(" [") + unit_label(c.units, q) + "]"; };
   const char* axis[3] = {"n", "t", "z"};
-  std::string out = fmt::format("impact3d: {} (units {}, precision {}, direct engine)\n",
-                                c.name.empty() ? "unnamed case" : c.name, units_name(c.units), precision);
+  std::string out = fmt::format("impact3d: {} (units {}, precision {}, {} engine)\n",
+                                c.name.empty() ? "unnamed case" : c.name, units_name(c.units), precision,
+                                engine_name(a.engine));
 
   Table cs;
   cs.heading("Case (eqs 4-9; impulse space as in Figure 2)");

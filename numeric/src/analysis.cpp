@@ -3,7 +3,7 @@
 
 namespace impact3d {
 
-template Analysis<double> analyze(const Scene<double>&, const std::vector<Strategy<double>>&);
-template Analysis<long double> analyze(const Scene<long double>&, const std::vector<Strategy<long double>>&);
+template Analysis<double> analyze(const Scene<double>&, const std::vector<Strategy<double>>&, Engine);
+template Analysis<long double> analyze(const Scene<long double>&, const std::vector<Strategy<long double>>&, Engine);
 
 }  // namespace impact3d

@@ -116,7 +116,7 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   w.key("name").string(c.name);
   w.key("units").string(units_name(c.units));
   w.key("precision").string(precision);
-  w.key("engine").string("direct");
+  w.key("engine").string(engine_name(a.engine));
   w.key("coefficients").begin_object();
   w.key("m_prime").raw(p.num(a.m_prime, f.mass));
   w.key("K");

@@ -4,12 +4,11 @@
 #pragma once
 
 #include <array>
-#include <cmath>
-#include <limits>
 #include <string>
 
 #include <Eigen/LU>
 
+#include "impact3d/numeric/problem.hpp"
 #include "impact3d/numeric/strategy.hpp"
 
 namespace impact3d::direct {
@@ -18,23 +17,6 @@ template <typename Scalar>
 struct Row {
   Vec3<Scalar> c;
   Scalar rhs;
-};
-
-// What one collision fixes for every strategy: m', K and the initial relative velocity (contact axes).
-template <typename Scalar>
-struct Problem {
-  Scalar m_prime;
-  Mat3<Scalar> K;
-  Vec3<Scalar> V_ri;
-  Scalar restitution;
-  Scalar kappa;  // 2-norm condition number of K
-
-  // A direction computed from a 3x3 solve is noise once its magnitude is below the solve's forward
-  // error, about eps * kappa(K) * scale; 16 covers the few roundings of assembling the rows.
-  bool negligible(const Scalar& x, const Scalar& scale) const {
-    using std::abs;
-    return abs(x) <= Scalar(16) * std::numeric_limits<Scalar>::epsilon() * kappa * scale;
-  }
 };
 
 // The post-impact relative velocity along unit u takes the value target: u^T K P = m' (u.V_ri - target).
@@ -80,31 +62,20 @@ Vec3<Scalar> solve_rows(const std::array<Row<Scalar>, 3>& rows, const std::strin
   return lu.solve(b);
 }
 
-// Unit vectors of a solution plane at angle phi from t towards z: u in the plane, w normal to it.
-template <typename Scalar>
-struct PlaneAxes {
-  Vec3<Scalar> u, w;
-};
-
-template <typename Scalar>
-PlaneAxes<Scalar> plane_axes(const Scalar& cos_phi, const Scalar& sin_phi) {
-  return {Vec3<Scalar>(Scalar(0), cos_phi, sin_phi), Vec3<Scalar>(Scalar(0), -sin_phi, cos_phi)};
-}
-
 // The ratio u.P / P_n at which sliding along u stops, on the plane (n, u): eq 19 (CIR) for the case's
 // restitution, eq 20 (GIR) for eps = 0.
 template <typename Scalar>
 Scalar plane_critical_ratio(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& eps,
                             const std::string& what) {
-  const Vec3<Scalar> P = solve_rows<Scalar>({restitution_row(p, eps), no_sliding_row(p, ax.u), no_impulse_row(ax.w)}, what);
-  return ax.u.dot(P) / P.x();
+  const Vec3<Scalar> P = solve_rows<Scalar>({restitution_row(p, eps), no_sliding_row(p, ax.u()), no_impulse_row(ax.w())}, what);
+  return ax.u().dot(P) / P.x();
 }
 
 // Impulse with ratio mu on the plane (n, u) and none along w (eqs 17-18, 22).
 template <typename Scalar>
 Vec3<Scalar> plane_impulse(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& mu,
                            const std::string& what) {
-  return solve_rows<Scalar>({restitution_row(p, p.restitution), ratio_row(ax.u, mu), no_impulse_row(ax.w)}, what);
+  return solve_rows<Scalar>({restitution_row(p, p.restitution), ratio_row(ax.u(), mu), no_impulse_row(ax.w())}, what);
 }
 
 }  // namespace impact3d::direct

@@ -6,7 +6,7 @@
 // the t and z planes meet in the Critical Impulse Line, whose direction is K_t x K_z.
 #pragma once
 
-#include "impact3d/numeric/direct/full_impact.hpp"
+#include "impact3d/numeric/problem.hpp"
 
 namespace impact3d {
 
@@ -19,12 +19,10 @@ struct ImpulseSpace {
   Scalar restitution_offset;       // the case's restitution plane: plane_normal.row(0) . P = this
 };
 
-namespace direct {
-
-template <typename Scalar>
+template <typename Engine, typename Scalar>
 ImpulseSpace<Scalar> impulse_space(const Problem<Scalar>& p) {
   ImpulseSpace<Scalar> s;
-  s.P_max_loss = full_impact_impulse(p, Scalar(0));
+  s.P_max_loss = Engine::full_impact(p, Scalar(0));
   for (int k = 0; k < 3; ++k) {
     const Scalar len = p.K.row(k).norm();
     s.plane_normal.row(k) = p.K.row(k) / len;
@@ -37,5 +35,4 @@ ImpulseSpace<Scalar> impulse_space(const Problem<Scalar>& p) {
   return s;
 }
 
-}  // namespace direct
 }  // namespace impact3d

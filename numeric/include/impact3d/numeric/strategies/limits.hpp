@@ -6,7 +6,7 @@
 
 #include "impact3d/numeric/strategy.hpp"
 
-namespace impact3d::direct {
+namespace impact3d::strategies {
 
 template <typename Scalar>
 void flag_if_not_finite(ImpulseSolution<Scalar>& out, const Scalar& value, const std::string& name) {
@@ -23,4 +23,4 @@ void flag_if_negative_ratio(ImpulseSolution<Scalar>& out, const Scalar& mu, cons
                             name + " used is negative: the contact-plane impulse acts along the initial sliding"});
 }
 
-}  // namespace impact3d::direct
+}  // namespace impact3d::strategies

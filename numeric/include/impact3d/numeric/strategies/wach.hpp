@@ -4,29 +4,28 @@
 
 #include <cmath>
 
-#include "impact3d/numeric/direct/constraints.hpp"
-#include "impact3d/numeric/direct/limits.hpp"
+#include "impact3d/numeric/problem.hpp"
+#include "impact3d/numeric/strategies/limits.hpp"
 
-namespace impact3d::direct {
+namespace impact3d::strategies {
 
-template <typename Scalar>
-ImpulseSolution<Scalar> solve_wach(const Problem<Scalar>& p, const Wach<Scalar>& spec) {
+template <typename Engine, typename Scalar>
+ImpulseSolution<Scalar> wach(const Problem<Scalar>& p, const Wach<Scalar>& spec) {
   using std::atan2;
   using std::hypot;
   ImpulseSolution<Scalar> out;
   const Scalar V_cp = hypot(p.V_ri.y(), p.V_ri.z());
-  PlaneAxes<Scalar> ax;
+  PlaneAxes<Scalar> ax{Scalar(1), Scalar(0)};
   if (p.negligible(V_cp, p.V_ri.norm())) {
-    ax = plane_axes(Scalar(1), Scalar(0));
     out.warnings.push_back({WarningCode::plane_undefined,
                             "phi (eq 21) is undefined: there is no initial sliding velocity; "
                             "the t axis (phi = 0) is used"});
   } else {
-    ax = plane_axes(Scalar(p.V_ri.y() / V_cp), Scalar(p.V_ri.z() / V_cp));
+    ax = {Scalar(p.V_ri.y() / V_cp), Scalar(p.V_ri.z() / V_cp)};
   }
-  out.plane_angle_deg = atan2(ax.u.z(), ax.u.y()) * Scalar(180) / pi<Scalar>();
-  out.cir = plane_critical_ratio(p, ax, p.restitution, "wach CIR (eq 19)");
-  out.gir = plane_critical_ratio(p, ax, Scalar(0), "wach GIR (eq 20)");
+  out.plane_angle_deg = atan2(ax.s, ax.c) * Scalar(180) / pi<Scalar>();
+  out.cir = Engine::plane_ratio(p, ax, p.restitution, "wach CIR (eq 19)");
+  out.gir = Engine::plane_ratio(p, ax, Scalar(0), "wach GIR (eq 20)");
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
   flag_if_not_finite(out, *out.gir, "GIR (eq 20)");
   const Scalar limit = spec.limit == WachLimit::cir ? *out.cir : *out.gir;
@@ -34,8 +33,8 @@ ImpulseSolution<Scalar> solve_wach(const Problem<Scalar>& p, const Wach<Scalar>&
   out.regime = capped ? Regime::capped : Regime::sliding;
   out.mu = capped ? limit : spec.mu;
   flag_if_negative_ratio(out, *out.mu, "impulse ratio");
-  out.P_C = plane_impulse(p, ax, *out.mu, "wach (eqs 18, 22)");
+  out.P_C = Engine::plane_impulse(p, ax, *out.mu, "wach (eqs 18, 22)");
   return out;
 }
 
-}  // namespace impact3d::direct
+}  // namespace impact3d::strategies

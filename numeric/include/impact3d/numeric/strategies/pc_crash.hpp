@@ -7,31 +7,30 @@
 
 #include <cmath>
 
-#include "impact3d/numeric/direct/full_impact.hpp"
-#include "impact3d/numeric/direct/limits.hpp"
+#include "impact3d/numeric/problem.hpp"
+#include "impact3d/numeric/strategies/limits.hpp"
 
-namespace impact3d::direct {
+namespace impact3d::strategies {
 
-template <typename Scalar>
-ImpulseSolution<Scalar> solve_pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec) {
+template <typename Engine, typename Scalar>
+ImpulseSolution<Scalar> pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec) {
   using std::atan2;
   using std::hypot;
   ImpulseSolution<Scalar> out;
-  const Vec3<Scalar> P_fi = full_impact_impulse(p, p.restitution);
+  const Vec3<Scalar> P_fi = Engine::full_impact(p, p.restitution);
   const Scalar P_cp = hypot(P_fi.y(), P_fi.z());
-  PlaneAxes<Scalar> ax;
+  PlaneAxes<Scalar> ax{Scalar(1), Scalar(0)};
   if (p.negligible(P_cp, P_fi.norm())) {
-    ax = plane_axes(Scalar(1), Scalar(0));
     out.warnings.push_back({WarningCode::plane_undefined,
                             "phi_FI (eq 15) is undefined: the Full Impact has no contact-plane impulse; "
                             "the t axis (phi_FI = 0) is used"});
   } else {
-    ax = plane_axes(Scalar(P_fi.y() / P_cp), Scalar(P_fi.z() / P_cp));
+    ax = {Scalar(P_fi.y() / P_cp), Scalar(P_fi.z() / P_cp)};
   }
-  out.plane_angle_deg = atan2(ax.u.z(), ax.u.y()) * Scalar(180) / pi<Scalar>();
+  out.plane_angle_deg = atan2(ax.s, ax.c) * Scalar(180) / pi<Scalar>();
   const Scalar gir = P_cp / P_fi.x();
   out.gir = gir;
-  out.cir = plane_critical_ratio(p, ax, p.restitution, "pc-crash CIR (eq 19)");
+  out.cir = Engine::plane_ratio(p, ax, p.restitution, "pc-crash CIR (eq 19)");
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
   if (spec.mu >= gir) {
     out.regime = Regime::full;
@@ -40,9 +39,9 @@ ImpulseSolution<Scalar> solve_pc_crash(const Problem<Scalar>& p, const PcCrash<S
   } else {
     out.regime = Regime::sliding;
     out.mu = spec.mu;
-    out.P_C = plane_impulse(p, ax, spec.mu, "pc-crash sliding impact (eq 18)");
+    out.P_C = Engine::plane_impulse(p, ax, spec.mu, "pc-crash sliding impact (eq 18)");
   }
   return out;
 }
 
-}  // namespace impact3d::direct
+}  // namespace impact3d::strategies

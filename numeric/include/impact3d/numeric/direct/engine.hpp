@@ -1,0 +1,42 @@
+// The direct engine's primitives: K assembled numerically, every impulse a 3x3 solve of constraint rows.
+#pragma once
+
+#include <optional>
+
+#include "impact3d/numeric/direct/coefficient_matrix.hpp"
+#include "impact3d/numeric/direct/constraints.hpp"
+#include "impact3d/numeric/direct/full_impact.hpp"
+
+namespace impact3d::direct {
+
+struct DirectEngine {
+  template <typename Scalar>
+  static Mat3<Scalar> coefficient_matrix(const Scene<Scalar>& s) {
+    return direct::coefficient_matrix(s);
+  }
+  template <typename Scalar>
+  static Vec3<Scalar> full_impact(const Problem<Scalar>& p, const Scalar& eps) {
+    return full_impact_impulse(p, eps);
+  }
+  template <typename Scalar>
+  static Scalar plane_ratio(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& eps, const std::string& what) {
+    return plane_critical_ratio(p, ax, eps, what);
+  }
+  template <typename Scalar>
+  static Vec3<Scalar> plane_impulse(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& mu,
+                                    const std::string& what) {
+    return direct::plane_impulse(p, ax, mu, what);
+  }
+  // Ratios along t and z, each given or (empty) critical.
+  template <typename Scalar>
+  static Vec3<Scalar> brach_impulse(const Problem<Scalar>& p, const std::optional<Scalar>& mu_t,
+                                    const std::optional<Scalar>& mu_z, const std::string& what) {
+    const Vec3<Scalar> e_t = Vec3<Scalar>::UnitY(), e_z = Vec3<Scalar>::UnitZ();
+    auto axis_row = [&](const Vec3<Scalar>& e, const std::optional<Scalar>& mu) {
+      return mu ? ratio_row(e, *mu) : no_sliding_row(p, e);
+    };
+    return solve_rows<Scalar>({restitution_row(p, p.restitution), axis_row(e_t, mu_t), axis_row(e_z, mu_z)}, what);
+  }
+};
+
+}  // namespace impact3d::direct

@@ -1,0 +1,76 @@
+// The generated engine: the adapter between the library's types and the kernels that symbolic/ derives
+// and writes into generated/ (do not edit those; regenerate). A closed form divides where the direct
+// engine's 3x3 system is singular; a non-finite result is reported the same way, as a SolveError.
+#pragma once
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "impact3d/generated/brach.hpp"
+#include "impact3d/generated/coefficient_matrix.hpp"
+#include "impact3d/generated/full_impact.hpp"
+#include "impact3d/generated/solution_plane.hpp"
+#include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/problem.hpp"
+#include "impact3d/numeric/strategy.hpp"
+
+namespace impact3d {
+
+struct GeneratedEngine {
+  template <typename Scalar>
+  static Mat3<Scalar> coefficient_matrix(const Scene<Scalar>& s) {
+    return generated::coefficient_matrix(reduced_mass(s), s.body[0].J_B, s.body[1].J_B, s.body[0].p_CgIc_B,
+                                         s.body[1].p_CgIc_B, R_CB(s, 0), R_CB(s, 1));
+  }
+  template <typename Scalar>
+  static Vec3<Scalar> full_impact(const Problem<Scalar>& p, const Scalar& eps) {
+    return finite(generated::full_impact(p.K, p.m_prime, eps, p.V_ri), "full impact");
+  }
+  template <typename Scalar>
+  static Scalar plane_ratio(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& eps, const std::string& what) {
+    const Scalar mu = eps == Scalar(0) ? generated::plane_generalized_ratio(p.K, p.V_ri, ax.c, ax.s)
+                                       : generated::plane_critical_ratio(p.K, eps, p.V_ri, ax.c, ax.s);
+    return finite(mu, what);
+  }
+  template <typename Scalar>
+  static Vec3<Scalar> plane_impulse(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& mu,
+                                    const std::string& what) {
+    return finite(generated::plane_impulse(p.K, p.m_prime, p.restitution, p.V_ri, ax.c, ax.s, mu), what);
+  }
+  template <typename Scalar>
+  static Vec3<Scalar> brach_impulse(const Problem<Scalar>& p, const std::optional<Scalar>& mu_t,
+                                    const std::optional<Scalar>& mu_z, const std::string& what) {
+    Scalar t, z;
+    if (mu_t && mu_z) {
+      t = *mu_t;
+      z = *mu_z;
+    } else if (mu_z) {  // eq 25
+      t = generated::brach_critical_t(p.K, p.restitution, p.V_ri, *mu_z);
+      z = *mu_z;
+    } else if (mu_t) {  // eq 26
+      t = *mu_t;
+      z = generated::brach_critical_z(p.K, p.restitution, p.V_ri, *mu_t);
+    } else {  // eq 27
+      const auto both = generated::brach_critical_both(p.K, p.restitution, p.V_ri);
+      t = both(0);
+      z = both(1);
+    }
+    return finite(generated::brach_impulse(p.K, p.m_prime, p.restitution, p.V_ri, finite(t, what), finite(z, what)), what);
+  }
+
+ private:
+  template <typename Scalar>
+  static Scalar finite(const Scalar& x, const std::string& what) {
+    using std::isfinite;
+    if (!isfinite(x)) throw SolveError(what + ": the constraints admit no unique impulse (a closed form divides by zero)");
+    return x;
+  }
+  template <typename Scalar>
+  static Vec3<Scalar> finite(const Vec3<Scalar>& v, const std::string& what) {
+    for (int i = 0; i < 3; ++i) finite(v(i), what);
+    return v;
+  }
+};
+
+}  // namespace impact3d

@@ -1,0 +1,42 @@
+// What one collision fixes for every strategy and engine: m', K, the initial relative velocity.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "impact3d/numeric/types.hpp"
+
+namespace impact3d {
+
+// The two ways impact3d computes K and the impulses: the closed forms generated from the GiNaC
+// derivation (production), and 3x3 linear solves of the constraints (the independent reference).
+enum class Engine { generated, direct };
+
+inline const char* engine_name(Engine e) { return e == Engine::generated ? "generated" : "direct"; }
+
+template <typename Scalar>
+struct Problem {
+  Scalar m_prime;
+  Mat3<Scalar> K;
+  Vec3<Scalar> V_ri;  // contact axes
+  Scalar restitution;
+  Scalar kappa;       // 2-norm condition number of K
+
+  // A direction computed from a 3x3 solve is noise once its magnitude is below the solve's forward
+  // error, about eps * kappa(K) * scale; 16 covers the few roundings of assembling the rows.
+  bool negligible(const Scalar& x, const Scalar& scale) const {
+    using std::abs;
+    return abs(x) <= Scalar(16) * std::numeric_limits<Scalar>::epsilon() * kappa * scale;
+  }
+};
+
+// Unit vectors of a solution plane at angle phi from t towards z: u in the plane, w normal to it.
+template <typename Scalar>
+struct PlaneAxes {
+  Scalar c, s;  // cos phi, sin phi
+  Vec3<Scalar> u() const { return Vec3<Scalar>(Scalar(0), c, s); }
+  Vec3<Scalar> w() const { return Vec3<Scalar>(Scalar(0), -s, c); }
+};
+
+}  // namespace impact3d

@@ -1,0 +1,49 @@
+// The paper's printed formulas, typed in as printed (symbols named as in the derivation). Nothing here
+// is used to compute: these are only compared with what the derivation gives.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "model.hpp"
+
+namespace impact3d::symbolic::paper {
+
+// eq 4, both lines as printed: V_IC f - V_IC i = dV + dw x r (the middle expression).
+matrix eq4_middle(const Derivation& d, int body);
+// eq 4, right-hand expression: P/m + [J^-1 (r x P)] x r.
+matrix eq4_right(const Derivation& d, int body);
+matrix eq6(const Derivation& d);
+matrix eq8(const Derivation& d);
+
+// eqs 10-12 in the symbols a1..c3, Vn, Vt, Vz, mp, eps.
+matrix eqs10_12();
+
+// Plane coefficients of eq 17 for a plane at (cp, sp) = (cos phi, sin phi), from the coefficients of
+// eq 9 (the paper leaves them implicit: "a, b and c determined for phi").
+struct PlaneCoefficients {
+  ex a1, a2, b1, b2, r;  // and r = V_rCPi / V_rni of eq 19
+};
+PlaneCoefficients plane_coefficients();
+
+ex eq18();  // P_n
+ex eq19();  // CIR
+ex eq20();  // GIR
+ex eq24();  // P_n
+ex eq25();  // mu_tC given mu_z
+ex eq26();  // mu_zC given mu_t
+ex eq27_t();
+ex eq27_z();
+
+// Appendix A. T(gamma, theta, phi) as printed, in symbols cg, sg, ct, st, cp, sp.
+matrix appendix_T(const ex& cg, const ex& sg, const ex& ct, const ex& st, const ex& cp, const ex& sp);
+// A, B, C, f1..f8 as printed, in the symbols mp, Ix1, ..., x1, ..., cg1, sg1, cp, sp.
+std::map<std::string, ex> appendix_definitions();
+// a1..c3 as printed, in the symbols A, B, C, f1..f8 (and mp, cp, sp).
+std::map<std::string, ex> appendix_coefficients();
+// Symbol A -> its printed definition, ... : turns a coefficient into the basic symbols.
+GiNaC::exmap appendix_definitions_map();
+// The coefficients with the corrections the audit verifies (c3), in the symbols A, B, C, f1..f8.
+std::map<std::string, ex> appendix_coefficients_corrected();
+
+}  // namespace impact3d::symbolic::paper
