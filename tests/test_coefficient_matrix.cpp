@@ -2,6 +2,7 @@
 // that unit impulses produce when applied to the bodies by the Newton-Euler impulse equations.
 #include <catch2/catch.hpp>
 
+#include "impact3d/generated/coefficient_matrix_appendix_a.hpp"
 #include "support.hpp"
 
 using namespace impact3d;
@@ -54,5 +55,30 @@ TEST_CASE("K is symmetric positive definite", "[K]") {
     CHECK((K - K.transpose()).cwiseAbs().maxCoeff() <= 16 * eps * K.norm());
     Eigen::SelfAdjointEigenSolver<M3> eig(K);
     CHECK(eig.eigenvalues().minCoeff() >= 1.0 - 16 * eps * K.norm());  // K = I + positive semidefinite
+  }
+}
+
+TEST_CASE("the Appendix A kernel (c3 corrected) equals K under its assumptions", "[K]") {
+  // Level vehicles, diagonal tensors, horizontal normal with a rolled tangent: the paper's special case.
+  std::mt19937_64 g(23);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int n = 0; n < 300; ++n) {
+    Scene<double> s;
+    for (auto& b : s.body) {
+      b.mass = 800 + 2500 * u(g);
+      b.J_B = V3(300 + 1000 * u(g), 1200 + 4000 * u(g), 1500 + 4500 * u(g)).asDiagonal();
+      b.R_WB = rotation_zyx_deg(-180 + 360 * u(g), 0.0, 0.0);
+      b.p_CgIc_B = V3(-2.5 + 5 * u(g), -1 + 2 * u(g), -0.5 + u(g));
+    }
+    const double nyaw = -180 + 360 * u(g), roll = -40 + 80 * u(g);
+    s.R_WC = rotation_zyx_deg(nyaw, 0.0, roll);
+    const M3 K = direct::coefficient_matrix(s);
+    auto yaw = [&](int i) { return std::atan2(s.body[i].R_WB(1, 0), s.body[i].R_WB(0, 0)); };
+    const M3 KA = generated::coefficient_matrix_appendix_a(reduced_mass(s), V3(s.body[0].J_B.diagonal()),
+                                                           V3(s.body[1].J_B.diagonal()), s.body[0].p_CgIc_B,
+                                                           s.body[1].p_CgIc_B, nyaw * M_PI / 180 - yaw(0),
+                                                           nyaw * M_PI / 180 - yaw(1), roll * M_PI / 180);
+    // Both sum a few dozen O(|K|) products of sines and cosines accurate to a few eps.
+    CHECK((K - KA).cwiseAbs().maxCoeff() <= 64 * eps * K.norm());
   }
 }
