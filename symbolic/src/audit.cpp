@@ -103,23 +103,7 @@ class Auditor {
   // itself equal the derivation.
   void compare(const std::string& id, const std::string& what, const ex& printed, const ex& derived,
                const exmap& subs, const ex& proposal = ex(), const std::string& proposal_note = "") {
-    AuditEntry e{id, "", "", latex(printed, latex_names()), "", {}};
-    if (identical(printed, derived, subs)) {
-      e.status = "verified";
-      e.detail = what + ": the printed expression equals the derivation identically.";
-    } else {
-      e.status = "erratum";
-      e.detail = what + ": the printed expression differs from the derivation.";
-      if (!proposal.is_zero() || !proposal_note.empty()) {
-        if (!identical(proposal, derived, subs)) throw std::runtime_error("audit: proposed correction for " + id + " is wrong");
-        e.corrected_latex = latex(proposal, latex_names());
-        e.detail += " " + proposal_note + " (the correction is verified against the derivation).";
-      } else {
-        e.corrected_latex = latex(normal(derived), latex_names());
-      }
-      e.witness = find_witness(printed, derived, kAngles);
-    }
-    entries.push_back(e);
+    compare_structured(id, what, printed, derived, {}, subs, proposal, proposal_note);
   }
 
   // A coefficient printed in terms of other printed items (symbols A, B, .. expanded through `defs`);

@@ -14,20 +14,13 @@ namespace impact3d::strategies {
 
 template <typename Engine, typename Scalar>
 ImpulseSolution<Scalar> pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec) {
-  using std::atan2;
   using std::hypot;
   ImpulseSolution<Scalar> out;
   const Vec3<Scalar> P_fi = Engine::full_impact(p, p.restitution);
+  const PlaneAxes<Scalar> ax = solution_plane(p, P_fi.y(), P_fi.z(), Scalar(P_fi.norm()), out,
+                                               "phi_FI (eq 15) is undefined: the Full Impact has no contact-plane "
+                                               "impulse; the t axis (phi_FI = 0) is used");
   const Scalar P_cp = hypot(P_fi.y(), P_fi.z());
-  PlaneAxes<Scalar> ax{Scalar(1), Scalar(0)};
-  if (p.negligible(P_cp, P_fi.norm())) {
-    out.warnings.push_back({WarningCode::plane_undefined,
-                            "phi_FI (eq 15) is undefined: the Full Impact has no contact-plane impulse; "
-                            "the t axis (phi_FI = 0) is used"});
-  } else {
-    ax = {Scalar(P_fi.y() / P_cp), Scalar(P_fi.z() / P_cp)};
-  }
-  out.plane_angle_deg = atan2(ax.s, ax.c) * Scalar(180) / pi<Scalar>();
   const Scalar gir = P_cp / P_fi.x();
   out.gir = gir;
   out.cir = Engine::plane_ratio(p, ax, p.restitution, "pc-crash CIR (eq 19)");

@@ -2,8 +2,6 @@
 // P_z' = 0, and mu capped at the plane's CIR (eq 19, Wach) or GIR (eq 20, Virtual CRASH guide).
 #pragma once
 
-#include <cmath>
-
 #include "impact3d/numeric/problem.hpp"
 #include "impact3d/numeric/strategies/limits.hpp"
 
@@ -11,19 +9,10 @@ namespace impact3d::strategies {
 
 template <typename Engine, typename Scalar>
 ImpulseSolution<Scalar> wach(const Problem<Scalar>& p, const Wach<Scalar>& spec) {
-  using std::atan2;
-  using std::hypot;
   ImpulseSolution<Scalar> out;
-  const Scalar V_cp = hypot(p.V_ri.y(), p.V_ri.z());
-  PlaneAxes<Scalar> ax{Scalar(1), Scalar(0)};
-  if (p.negligible(V_cp, p.V_ri.norm())) {
-    out.warnings.push_back({WarningCode::plane_undefined,
-                            "phi (eq 21) is undefined: there is no initial sliding velocity; "
-                            "the t axis (phi = 0) is used"});
-  } else {
-    ax = {Scalar(p.V_ri.y() / V_cp), Scalar(p.V_ri.z() / V_cp)};
-  }
-  out.plane_angle_deg = atan2(ax.s, ax.c) * Scalar(180) / pi<Scalar>();
+  const PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), Scalar(p.V_ri.norm()), out,
+                                               "phi (eq 21) is undefined: there is no initial sliding velocity; "
+                                               "the t axis (phi = 0) is used");
   out.cir = Engine::plane_ratio(p, ax, p.restitution, "wach CIR (eq 19)");
   out.gir = Engine::plane_ratio(p, ax, Scalar(0), "wach GIR (eq 20)");
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
