@@ -7,7 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "impact3d/case/read_case.hpp"
-#include "report_text.hpp"
+#include "render.hpp"
 
 namespace {
 
@@ -23,8 +23,8 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
-int solve(const std::string& case_path, const std::string& format, const std::vector<std::string>& strategies,
-          int digits, const std::string& engine_name) {
+int solve(const std::string& case_path, const std::vector<std::string>& strategies, const std::string& precision,
+          const impact3d::cli::RenderOptions& options) {
   using namespace impact3d;
   std::string output;
   try {
@@ -34,10 +34,11 @@ int solve(const std::string& case_path, const std::string& format, const std::ve
       for (std::size_t i = 0; i < strategies.size(); ++i)
         spec.strategies.push_back(io::read_strategy_option(strategies[i], static_cast<int>(i)));
     }
-    const Scene<double> scene = io::to_scene<double>(spec);
-    const Engine engine = engine_name == "direct" ? Engine::direct : Engine::generated;
-    const Analysis<double> a = analyze(scene, io::to_strategies<double>(spec), engine);
-    output = format == "json" ? io::result_json(spec, a, "double") : cli::report_text(spec, a, "double", digits);
+    if (precision == "double") output = cli::render_double(spec, options);
+    else if (precision == "long-double") output = cli::render_long_double(spec, options);
+    else if (precision == "float128") output = cli::render_float128(spec, options);
+    else if (precision == "50") output = cli::render_float50(spec, options);
+    else output = cli::render_float100(spec, options);
   } catch (const io::CaseError& e) {
     std::fprintf(stderr, "impact3d: error: %s: %s\n", case_path.c_str(), e.line().c_str());
     return kBadInput;
@@ -60,18 +61,24 @@ int main(int argc, char** argv) {
   auto* solve_cmd = app.add_subcommand("solve", "solve a case file (contract: case-format.md)");
   std::string case_path, format = "text";
   std::vector<std::string> strategies;
-  int digits = 10;
-  std::string engine = "generated";
+  int digits = 0;
+  std::string engine = "generated", precision = "double";
   solve_cmd->add_option("case", case_path, "case file (JSON)")->required();
   solve_cmd->add_option("--format", format, "text report or contract JSON")->check(CLI::IsMember({"text", "json"}));
   solve_cmd->add_option("--strategy", strategies,
                         "replace the case's strategies, e.g. pc-crash:mu=0.4  wach:mu=0.4,limit=gir  "
                         "brach:mu_t=critical,mu_z=0 (repeatable)");
-  solve_cmd->add_option("--digits", digits, "significant digits in the text report (JSON always prints all)")
-      ->check(CLI::Range(1, 40));
+  solve_cmd->add_option("--digits", digits,
+                        "significant digits in the text report (default 10 at double, else every digit the "
+                        "precision holds; JSON always prints them all)")
+      ->check(CLI::Range(1, 110));
+  solve_cmd->add_option("--precision", precision, "arithmetic: double, long-double, float128, 50 or 100 decimal digits")
+      ->check(CLI::IsMember({"double", "long-double", "float128", "50", "100"}));
   solve_cmd->add_option("--engine", engine,
                         "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
       ->check(CLI::IsMember({"generated", "direct"}));
   CLI11_PARSE(app, argc, argv);
-  return solve(case_path, format, strategies, digits, engine);
+  if (digits == 0 && precision == "double") digits = 10;
+  return solve(case_path, strategies, precision,
+               {format, digits, engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated});
 }

@@ -1,0 +1,62 @@
+// The wider scalar types impact3d is verified at, and their Eigen traits. Expression templates are off so
+// that Eigen never sees a Boost expression type; Boost's own Eigen adapter (1.74) lacks infinity() and
+// quiet_NaN(), which Eigen 3.4's hypot needs, so the traits are defined here on GenericNumTraits, whose
+// members come from std::numeric_limits (specialized by Boost for these types).
+#pragma once
+
+#include <limits>
+
+#include <Eigen/Core>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <boost/multiprecision/float128.hpp>
+#include <boost/multiprecision/mpfr.hpp>
+
+namespace impact3d::mp {
+
+using float128 = boost::multiprecision::float128;
+using float50 = boost::multiprecision::number<boost::multiprecision::cpp_bin_float<50>, boost::multiprecision::et_off>;
+using float100 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<100>, boost::multiprecision::et_off>;
+
+template <typename T>
+struct NumTraitsFor : Eigen::GenericNumTraits<T> {
+  using Real = T;
+  using NonInteger = T;
+  using Literal = T;
+  using Nested = T;
+  enum {
+    IsComplex = 0,
+    IsInteger = 0,
+    IsSigned = 1,
+    RequireInitialization = 1,
+    ReadCost = 1,
+    AddCost = 4,
+    MulCost = 8
+  };
+  static T epsilon() { return std::numeric_limits<T>::epsilon(); }
+  // Eigen's default tolerance for approximate comparisons and rank decisions.
+  static T dummy_precision() { return T(1000) * std::numeric_limits<T>::epsilon(); }
+  static T highest() { return (std::numeric_limits<T>::max)(); }
+  static T lowest() { return std::numeric_limits<T>::lowest(); }
+  static T infinity() { return std::numeric_limits<T>::infinity(); }
+  static T quiet_NaN() { return std::numeric_limits<T>::quiet_NaN(); }
+  static int digits10() { return std::numeric_limits<T>::digits10; }
+};
+
+}  // namespace impact3d::mp
+
+namespace Eigen {
+template <>
+struct NumTraits<impact3d::mp::float128> : impact3d::mp::NumTraitsFor<impact3d::mp::float128> {};
+template <>
+struct NumTraits<impact3d::mp::float50> : impact3d::mp::NumTraitsFor<impact3d::mp::float50> {};
+template <>
+struct NumTraits<impact3d::mp::float100> : impact3d::mp::NumTraitsFor<impact3d::mp::float100> {};
+}  // namespace Eigen
+
+#include "impact3d/numeric/analysis.hpp"
+
+namespace impact3d {
+extern template Analysis<mp::float128> analyze(const Scene<mp::float128>&, const std::vector<Strategy<mp::float128>>&, Engine);
+extern template Analysis<mp::float50> analyze(const Scene<mp::float50>&, const std::vector<Strategy<mp::float50>>&, Engine);
+extern template Analysis<mp::float100> analyze(const Scene<mp::float100>&, const std::vector<Strategy<mp::float100>>&, Engine);
+}  // namespace impact3d
