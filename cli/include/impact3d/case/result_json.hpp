@@ -107,9 +107,10 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   w.end_object();
 }
 
+// `digits`: significant digits of every number; 0 means every digit the precision holds (max_digits10).
 template <typename Scalar>
-std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision) {
-  const Present<Scalar> p(c.units, std::numeric_limits<Scalar>::max_digits10);
+std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, int digits = 0) {
+  const Present<Scalar> p(c.units, digits > 0 ? digits : std::numeric_limits<Scalar>::max_digits10);
   const auto& f = p.f;
   JsonWriter w;
   w.begin_object();

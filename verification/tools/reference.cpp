@@ -1,0 +1,62 @@
+// impact3d-reference: the reference outputs. Each case is solved at 100 decimal digits by both engines,
+// which must agree to at least 80 digits, and the contract's result is written at 40 significant digits.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "impact3d/case/read_case.hpp"
+#include "impact3d/numeric/multiprecision.hpp"
+
+namespace fs = std::filesystem;
+using namespace impact3d;
+using F = mp::float100;
+
+namespace {
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Relative difference of the two engines' impulses, the largest over the case's strategies.
+F engine_difference(const Analysis<F>& a, const Analysis<F>& b) {
+  F worst = 0;
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) {
+    const F d = (a.solutions[k].impulse.P_C - b.solutions[k].impulse.P_C).norm() / b.solutions[k].impulse.P_C.norm();
+    if (d > worst) worst = d;
+  }
+  return worst;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3 || std::string(argv[1]) != "--out") {
+    std::cerr << "usage: impact3d-reference --out DIR CASE.json...\n";
+    return 2;
+  }
+  const fs::path out = argv[2];
+  fs::create_directories(out);
+  for (int i = 3; i < argc; ++i) {
+    const fs::path in = argv[i];
+    try {
+      const io::CaseSpec spec = io::read_case(slurp(in));
+      const Scene<F> scene = io::to_scene<F>(spec);
+      const auto strategies = io::to_strategies<F>(spec);
+      const Analysis<F> a = analyze(scene, strategies, Engine::generated);
+      const Analysis<F> b = analyze(scene, strategies, Engine::direct);
+      if (engine_difference(a, b) > F("1e-80")) {
+        std::cerr << "impact3d-reference: " << in << ": the engines disagree beyond 80 digits\n";
+        return 1;
+      }
+      std::ofstream(out / in.filename(), std::ios::binary) << io::result_json(spec, a, "100", 40);
+    } catch (const std::exception& e) {
+      std::cerr << "impact3d-reference: " << in << ": " << e.what() << "\n";
+      return 1;
+    }
+  }
+  return 0;
+}
