@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "impact3d/case/read_case.hpp"
+#include "compare.hpp"
 #include "render.hpp"
 
 namespace {
@@ -77,7 +78,23 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--engine", engine,
                         "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
       ->check(CLI::IsMember({"generated", "direct"}));
+  auto* compare_cmd = app.add_subcommand("compare", "compare another tool's results with reference results");
+  std::string reference, other;
+  impact3d::cli::CompareOptions copt;
+  compare_cmd->add_option("reference", reference, "reference result (JSON file) or directory (verification/reference)")->required();
+  compare_cmd->add_option("other", other, "the other tool's results: JSON file, directory of JSON files, or CSV")->required();
+  compare_cmd->add_option("--rtol", copt.rtol, "relative tolerance (default 1e-9)");
+  compare_cmd->add_option("--atol", copt.atol, "absolute tolerance in the case's units (default 1e-9)");
+  compare_cmd->add_flag("--all", copt.all_fields, "also require the reference's fields beyond the contract");
   CLI11_PARSE(app, argc, argv);
+  if (compare_cmd->parsed()) {
+    try {
+      return impact3d::cli::compare(reference, other, copt);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "impact3d: error: %s\n", e.what());
+      return kBadInput;
+    }
+  }
   if (digits == 0 && precision == "double") digits = 10;
   return solve(case_path, strategies, precision,
                {format, digits, engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated});

@@ -41,10 +41,17 @@ void write_matrix(JsonWriter& w, const Mat3<Scalar>& m, const Present<Scalar>& p
   w.end_array();
 }
 
+// `snap`: print post-impact relative velocities inside the computation's rounding bound as 0 (the
+// reference suite does, so that no digit of rounding noise is printed as significant).
 template <typename Scalar>
 void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* veh, const Solution<Scalar>& s,
-                    const Present<Scalar>& p) {
+                    const Present<Scalar>& p, bool snap) {
   const auto& f = p.f;
+  auto vel = [&](const Scalar& v) {
+    using std::abs;
+    return snap && abs(v) <= s.velocity_roundoff ? std::string("0") : p.num(v, f.velocity);
+  };
+  auto vel3 = [&](const Vec3<Scalar>& v) { return std::vector<std::string>{vel(v.x()), vel(v.y()), vel(v.z())}; };
   const auto& imp = s.impulse;
   w.begin_object();
   w.key("strategy");
@@ -68,13 +75,13 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   w.end_object();
   w.key("relative_velocity").begin_object();
   w.key("before").number_array(p.vec(s.V_ri, f.velocity));
-  w.key("after").number_array(p.vec(s.V_rf, f.velocity));
+  w.key("after").number_array(vel3(s.V_rf));
   w.end_object();
   w.key("sliding").begin_object();
   w.key("before").raw(p.num(s.sliding_before, f.velocity));
-  w.key("after").raw(p.num(s.sliding_after, f.velocity));
+  w.key("after").raw(vel(s.sliding_after));
   if (s.swerve_deg) w.key("swerve_angle_deg").raw(p.num(*s.swerve_deg)); else w.key("swerve_angle_deg").null();
-  if (s.swerve_speed) w.key("swerve_speed").raw(p.num(*s.swerve_speed, f.velocity)); else w.key("swerve_speed").null();
+  if (s.swerve_speed) w.key("swerve_speed").raw(vel(*s.swerve_speed)); else w.key("swerve_speed").null();
   w.end_object();
   w.key("impulse_space").begin_object();
   w.key("restitution_effective").raw(p.num(s.restitution_effective));
@@ -109,7 +116,8 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
 
 // `digits`: significant digits of every number; 0 means every digit the precision holds (max_digits10).
 template <typename Scalar>
-std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, int digits = 0) {
+std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, int digits = 0,
+                        bool snap_zeros = false) {
   const Present<Scalar> p(c.units, digits > 0 ? digits : std::numeric_limits<Scalar>::max_digits10);
   const auto& f = p.f;
   JsonWriter w;
@@ -150,7 +158,7 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   w.end_object();
   w.key("results").begin_array();
   for (std::size_t k = 0; k < a.solutions.size(); ++k)
-    write_solution(w, c.strategies[k], c.vehicles.data(), a.solutions[k], p);
+    write_solution(w, c.strategies[k], c.vehicles.data(), a.solutions[k], p, snap_zeros);
   w.end_array();
   w.end_object();
   return w.str();
