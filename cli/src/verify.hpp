@@ -1,0 +1,21 @@
+// impact3d verify: every engine at every precision against the 100-digit solve of the same decimal
+// inputs, with errors in units of each type's epsilon, digits of agreement and the worst case.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace impact3d::cli {
+
+struct VerifyOptions {
+  std::vector<std::string> inputs;  // case files or directories of them
+  int random = 0;                   // seeded random cases to add
+  std::uint64_t seed = 1;
+};
+
+// Prints the report; returns 0 when every bound holds and every precision takes the reference's
+// decisions (regimes, plane fallbacks), 1 otherwise.
+int verify(const VerifyOptions& o);
+
+}  // namespace impact3d::cli
