@@ -122,14 +122,19 @@ struct Stat {
   }
 };
 
-// Conditioning of the case as the engines see it: kappa(K) and the worse cond(J) of the two vehicles.
+// Conditioning of the case: kappa(K) and the worse cond(J) of the two vehicles (the solves and the
+// inverse), times the cancellation in the normal approach velocity, (|v_IC1| + |v_IC2|) / V_rn: the
+// decimal inputs and the rotations are rounded to each type (a relative eps each), V_rn = n.(v2 - v1)
+// carries an absolute error of eps times the velocities, and every impulse is proportional to V_rn
+// through the restitution constraint. A grazing contact (V_rn small beside the speeds) is ill-posed.
 double condition(const Analysis<F>& ref, const Scene<F>& s) {
   double cj = 1;
   for (const auto& b : s.body) {
     Eigen::SelfAdjointEigenSolver<Mat3<F>> eig(b.J_B, Eigen::EigenvaluesOnly);
     cj = std::max(cj, static_cast<double>(eig.eigenvalues().maxCoeff() / eig.eigenvalues().minCoeff()));
   }
-  return static_cast<double>(ref.kappa) * cj;
+  const double cancellation = static_cast<double>((v_Ic_W(s.body[0]).norm() + v_Ic_W(s.body[1]).norm()) / ref.V_ri.x());
+  return static_cast<double>(ref.kappa) * cj * std::max(1.0, cancellation);
 }
 
 struct Quantities {
@@ -227,7 +232,8 @@ int verify(const VerifyOptions& o) {
   }
   std::string report = fmt::format(
       "{} cases against their 100-digit solve (generated engine). Errors: max and rms in units of the type's eps;\n"
-      "bound: max in units of eps x kappa(K) cond(J) (ratios also x (1 + |V_cp/V_n|)(1 + |mu|)), must be <= 32;\n"
+      "bound: max in units of eps x kappa(K) cond(J) (|v_IC1| + |v_IC2|)/V_rn (ratios also x (1 + |V_cp/V_n|)(1 + |mu|)),\n"
+      "must be <= 32;\n"
       "digits: the fewest correct significant digits; worst: the case of the largest bound units.\n\n",
       cases.size());
   report += fmt::format("{:<12} {:<10} {:<15} {:>12} {:>10} {:>10} {:>8}  {}\n", "precision", "engine", "quantity", "max [eps]",

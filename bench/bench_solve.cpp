@@ -1,0 +1,85 @@
+// Cases per second at each precision and engine, and where the time of one case goes: reading the
+// JSON, converting the decimals to a scene, K, the strategies and their consequences, and printing.
+#include <benchmark/benchmark.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "impact3d/case/read_case.hpp"
+#include "impact3d/numeric/multiprecision.hpp"
+
+using namespace impact3d;
+
+namespace {
+
+const std::string& case_text() {
+  static const std::string text = [] {
+    std::ifstream in(IMPACT3D_BENCH_CASE);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }();
+  return text;
+}
+
+const io::CaseSpec& spec() {
+  static const io::CaseSpec s = io::read_case(case_text());
+  return s;
+}
+
+void read_case(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(io::read_case(case_text()));
+}
+
+template <typename T>
+void to_scene(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(io::to_scene<T>(spec()));
+}
+
+template <typename T, Engine E>
+void coefficient_matrix(benchmark::State& state) {
+  const Scene<T> s = io::to_scene<T>(spec());
+  for (auto _ : state) {
+    if constexpr (E == Engine::generated) benchmark::DoNotOptimize(GeneratedEngine::coefficient_matrix(s));
+    else benchmark::DoNotOptimize(direct::DirectEngine::coefficient_matrix(s));
+  }
+}
+
+// One case: K, the impulse space and the case's four strategies with their post-impact states.
+template <typename T, Engine E>
+void solve(benchmark::State& state) {
+  const Scene<T> s = io::to_scene<T>(spec());
+  const auto st = io::to_strategies<T>(spec());
+  for (auto _ : state) benchmark::DoNotOptimize(analyze(s, st, E));
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+template <typename T>
+void result_json(benchmark::State& state) {
+  const auto a = analyze(io::to_scene<T>(spec()), io::to_strategies<T>(spec()));
+  for (auto _ : state) benchmark::DoNotOptimize(io::result_json(spec(), a, "p"));
+}
+
+}  // namespace
+
+BENCHMARK(read_case);
+BENCHMARK(to_scene<double>);
+BENCHMARK(to_scene<mp::float100>);
+BENCHMARK(coefficient_matrix<double, Engine::generated>);
+BENCHMARK(coefficient_matrix<double, Engine::direct>);
+BENCHMARK(coefficient_matrix<mp::float100, Engine::generated>);
+BENCHMARK(coefficient_matrix<mp::float100, Engine::direct>);
+BENCHMARK(solve<double, Engine::generated>);
+BENCHMARK(solve<double, Engine::direct>);
+BENCHMARK(solve<long double, Engine::generated>);
+BENCHMARK(solve<long double, Engine::direct>);
+BENCHMARK(solve<mp::float128, Engine::generated>);
+BENCHMARK(solve<mp::float128, Engine::direct>);
+BENCHMARK(solve<mp::float50, Engine::generated>);
+BENCHMARK(solve<mp::float50, Engine::direct>);
+BENCHMARK(solve<mp::float100, Engine::generated>);
+BENCHMARK(solve<mp::float100, Engine::direct>);
+BENCHMARK(result_json<double>);
+BENCHMARK(result_json<mp::float100>);
+
+BENCHMARK_MAIN();
