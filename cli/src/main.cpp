@@ -40,7 +40,8 @@ int solve(const std::string& case_path, const std::vector<std::string>& strategi
     else if (precision == "long-double") output = cli::render_long_double(spec, options);
     else if (precision == "float128") output = cli::render_float128(spec, options);
     else if (precision == "50") output = cli::render_float50(spec, options);
-    else output = cli::render_float100(spec, options);
+    else if (precision == "100") output = cli::render_float100(spec, options);
+    else output = cli::render_exact(spec, options);
   } catch (const io::CaseError& e) {
     std::fprintf(stderr, "impact3d: error: %s: %s\n", case_path.c_str(), e.line().c_str());
     return kBadInput;
@@ -74,8 +75,10 @@ int main(int argc, char** argv) {
                         "significant digits in the text report (default 10 at double, else every digit the "
                         "precision holds; JSON always prints them all)")
       ->check(CLI::Range(1, 110));
-  solve_cmd->add_option("--precision", precision, "arithmetic: double, long-double, float128, 50 or 100 decimal digits")
-      ->check(CLI::IsMember({"double", "long-double", "float128", "50", "100"}));
+  solve_cmd->add_option("--precision", precision,
+                        "arithmetic: double, long-double, float128, 50 or 100 decimal digits, or exact (fractions where "
+                        "the result is rational, beside the 100-digit solve)")
+      ->check(CLI::IsMember({"double", "long-double", "float128", "50", "100", "exact"}));
   solve_cmd->add_option("--engine", engine,
                         "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
       ->check(CLI::IsMember({"generated", "direct"}));

@@ -122,13 +122,22 @@ class Reader {
   }
 
   VehicleSpec vehicle(const json& v, const std::string& ptr) const {
-    object(v, ptr, {"name", "mass", "inertia", "orientation_deg", "velocity", "angular_velocity", "impulse_center"});
+    object(v, ptr, {"name", "mass", "inertia", "orientation_deg", "orientation_matrix", "velocity", "angular_velocity",
+                    "impulse_center"});
     VehicleSpec veh;
     if (auto* n = optional(v, "name")) veh.name = string(*n, ptr + "/name");
     veh.mass = positive(required(v, ptr, "mass"), ptr + "/mass");
     inertia(veh, required(v, ptr, "inertia"), ptr + "/inertia");
     static const json empty = json::object();
     const json* o = optional(v, "orientation_deg");
+    if (const json* m = optional(v, "orientation_matrix")) {
+      if (o) fail(ptr + "/orientation_matrix", "give either orientation_deg or orientation_matrix, not both");
+      if (!m->is_array() || m->size() != 3) fail(ptr + "/orientation_matrix", "expected a 3x3 rotation matrix (rows of R_WB)");
+      std::array<Vector3, 3> rows;
+      for (int i = 0; i < 3; ++i) rows[i] = vector3((*m)[i], ptr + "/orientation_matrix/" + std::to_string(i));
+      veh.orientation_matrix = rows;
+      veh.orientation_path = display_path(ptr + "/orientation_matrix");
+    }
     const std::string optr = ptr + "/orientation_deg";
     if (o) object(*o, optr, {"yaw", "pitch", "roll"});
     const json& orient = o ? *o : empty;

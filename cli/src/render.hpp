@@ -21,5 +21,7 @@ std::string render_long_double(const io::CaseSpec& spec, const RenderOptions& o)
 std::string render_float128(const io::CaseSpec& spec, const RenderOptions& o);
 std::string render_float50(const io::CaseSpec& spec, const RenderOptions& o);
 std::string render_float100(const io::CaseSpec& spec, const RenderOptions& o);
+// Fractions where the result is rational, beside the 100-digit computation.
+std::string render_exact(const io::CaseSpec& spec, const RenderOptions& o);
 
 }  // namespace impact3d::cli

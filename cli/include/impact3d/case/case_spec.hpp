@@ -34,6 +34,9 @@ struct VehicleSpec {
   std::array<Vector3, 3> inertia;  // full tensor (the diagonal shorthand is expanded, zeros off-diagonal)
   std::string inertia_path;
   Number yaw, pitch, roll;
+  // Alternatively the orientation as a rotation matrix R_WB (rows), e.g. rational for exact arithmetic.
+  std::optional<std::array<Vector3, 3>> orientation_matrix;
+  std::string orientation_path;
   Vector3 velocity, angular_velocity, impulse_center;
 };
 

@@ -2,6 +2,8 @@
 // documented in the README: impulse-space geometry, sliding and swerve, Delta-V magnitude and PDOF.
 #pragma once
 
+#include <functional>
+
 #include "impact3d/case/json_writer.hpp"
 #include "impact3d/case/present.hpp"
 #include "impact3d/numeric/analysis.hpp"
@@ -115,9 +117,10 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
 }
 
 // `digits`: significant digits of every number; 0 means every digit the precision holds (max_digits10).
+// `extra`, when given, writes further top-level keys (the exact fractions of --precision exact).
 template <typename Scalar>
 std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, int digits = 0,
-                        bool snap_zeros = false) {
+                        bool snap_zeros = false, const std::function<void(JsonWriter&)>& extra = {}) {
   const Present<Scalar> p(c.units, digits > 0 ? digits : std::numeric_limits<Scalar>::max_digits10);
   const auto& f = p.f;
   JsonWriter w;
@@ -160,6 +163,7 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   for (std::size_t k = 0; k < a.solutions.size(); ++k)
     write_solution(w, c.strategies[k], c.vehicles.data(), a.solutions[k], p, snap_zeros);
   w.end_array();
+  if (extra) extra(w);
   w.end_object();
   return w.str();
 }

@@ -33,9 +33,29 @@ Mat3<Scalar> contact_rotation(const ContactSpec& c) {
   if (n.squaredNorm() == Scalar(0)) throw CaseError(c.path + ".normal", "zero vector");
   // Parallel when the tangent has no component across the normal, to the rounding of the products.
   const Scalar across = n.cross(t).squaredNorm(), scale = n.squaredNorm() * t.squaredNorm();
-  if (!(across > Scalar(64) * std::numeric_limits<Scalar>::epsilon() * scale))
+  bool parallel;
+  if constexpr (is_exact_v<Scalar>) parallel = across == Scalar(0);
+  else parallel = !(across > Scalar(64) * std::numeric_limits<Scalar>::epsilon() * scale);
+  if (parallel)
     throw CaseError(c.path + ".tangent", "zero or parallel to the normal");
   return contact_frame_from_vectors(n, t);
+}
+
+// A proper rotation: exactly in exact arithmetic; otherwise R R^T = I within 1e-12 (decimals written to
+// 13 or more digits pass) and det R > 0.
+template <typename Scalar>
+void check_rotation(const Mat3<Scalar>& R, const std::string& path) {
+  const Mat3<Scalar> E = R * R.transpose() - Mat3<Scalar>::Identity();
+  Scalar worst(0);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      using std::abs;
+      if (abs(E(i, j)) > worst) worst = abs(E(i, j));
+    }
+  const bool orthonormal = is_exact_v<Scalar> ? worst == Scalar(0) : worst <= Scalar(1) / Scalar(1000000000000LL);
+  if (!orthonormal)
+    throw CaseError(path, "not a rotation: R R^T differs from I by " + scalar_to_text(Scalar(worst), 3));
+  if (!(R.determinant() > Scalar(0))) throw CaseError(path, "not a rotation: its determinant is negative (a reflection)");
 }
 
 template <typename Scalar>
@@ -44,10 +64,26 @@ RigidBody<Scalar> to_body(const VehicleSpec& v, const UnitFactors<Scalar>& f) {
   b.mass = to_scalar<Scalar>(v.mass) * f.mass;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) b.J_B(i, j) = to_scalar<Scalar>(v.inertia[i][j]) * f.inertia;
-  if (b.J_B.llt().info() != Eigen::Success) throw CaseError(v.inertia_path, "not positive definite");
-  b.R_WB = rotation_zyx_deg(to_scalar<Scalar>(v.yaw), to_scalar<Scalar>(v.pitch), to_scalar<Scalar>(v.roll));
+  bool positive_definite;
+  if constexpr (is_exact_v<Scalar>) {
+    const Eigen::LDLT<Mat3<Scalar>> ldlt(b.J_B);
+    positive_definite = ldlt.info() == Eigen::Success && (ldlt.vectorD().array() > Scalar(0)).all();
+  } else {
+    positive_definite = b.J_B.llt().info() == Eigen::Success;
+  }
+  if (!positive_definite) throw CaseError(v.inertia_path, "not positive definite");
+  if (v.orientation_matrix) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) b.R_WB(i, j) = to_scalar<Scalar>((*v.orientation_matrix)[i][j]);
+    check_rotation(b.R_WB, v.orientation_path);
+  } else {
+    b.R_WB = rotation_zyx_deg(to_scalar<Scalar>(v.yaw), to_scalar<Scalar>(v.pitch), to_scalar<Scalar>(v.roll));
+  }
   b.v_W = to_vec3(v.velocity, f.velocity);
   b.w_B = to_vec3(v.angular_velocity, f.angular_velocity);
+  if constexpr (is_exact_v<Scalar>)
+    if (f.angular_velocity == Scalar(0) && !to_vec3(v.angular_velocity, Scalar(1)).isZero())
+      throw Irrational("an angular velocity in deg/s (pi / 180 to rad/s)");
   b.p_CgIc_B = to_vec3(v.impulse_center, f.length);
   return b;
 }

@@ -11,6 +11,7 @@
 #include "impact3d/generated/coefficient_matrix.hpp"
 #include "impact3d/generated/full_impact.hpp"
 #include "impact3d/generated/solution_plane.hpp"
+#include "impact3d/numeric/exact.hpp"
 #include "impact3d/numeric/kinematics.hpp"
 #include "impact3d/numeric/problem.hpp"
 #include "impact3d/numeric/strategy.hpp"
@@ -62,8 +63,7 @@ struct GeneratedEngine {
  private:
   template <typename Scalar>
   static Scalar finite(const Scalar& x, const std::string& what) {
-    using std::isfinite;
-    if (!isfinite(x)) throw SolveError(what + ": the constraints admit no unique impulse (a closed form divides by zero)");
+    if (!is_finite(x)) throw SolveError(what + ": the constraints admit no unique impulse (a closed form divides by zero)");
     return x;
   }
   template <typename Scalar>

@@ -20,7 +20,7 @@ RigidBody<Scalar> apply_impulse(const RigidBody<Scalar>& b, const Vec3<Scalar>& 
   RigidBody<Scalar> a = b;
   a.v_W += P_W / b.mass;
   const Vec3<Scalar> P_B = b.R_WB.transpose() * P_W;
-  a.w_B += b.J_B.llt().solve(b.p_CgIc_B.cross(P_B));
+  a.w_B += spd_solve(b.J_B, Vec3<Scalar>(b.p_CgIc_B.cross(P_B)));
   return a;
 }
 

@@ -27,7 +27,8 @@ struct Problem {
   // error, about eps * kappa(K) * scale; 16 covers the few roundings of assembling the rows.
   bool negligible(const Scalar& x, const Scalar& scale) const {
     using std::abs;
-    return abs(x) <= Scalar(16) * std::numeric_limits<Scalar>::epsilon() * kappa * scale;
+    if constexpr (std::numeric_limits<Scalar>::is_exact) return x == Scalar(0);
+    else return abs(x) <= Scalar(16) * std::numeric_limits<Scalar>::epsilon() * kappa * scale;
   }
 };
 

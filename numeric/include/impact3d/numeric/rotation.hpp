@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "impact3d/numeric/exact.hpp"
 #include "impact3d/numeric/types.hpp"
 
 namespace impact3d {
@@ -18,17 +19,21 @@ struct SinCos {
 template <typename Scalar>
 SinCos<Scalar> sin_cos_deg(const Scalar& deg) {
   using std::cos;
-  using std::floor;
-  using std::fmod;
   using std::sin;
   const Scalar quarter(90);
-  Scalar turns = floor(deg / quarter + ratio<Scalar>(1, 2));
+  Scalar turns = floor_of(Scalar(deg / quarter + ratio<Scalar>(1, 2)));
   Scalar rest = deg - turns * quarter;  // in [-45, 45]
-  Scalar q = fmod(turns, Scalar(4));
-  if (q < Scalar(0)) q += Scalar(4);
-  const Scalar rad = rest * pi<Scalar>() / Scalar(180);
-  const Scalar s = rest == Scalar(0) ? Scalar(0) : sin(rad);
-  const Scalar c = rest == Scalar(0) ? Scalar(1) : cos(rad);
+  Scalar q = turns - Scalar(4) * floor_of(Scalar(turns / Scalar(4)));
+  Scalar s(0), c(1);
+  if constexpr (is_exact_v<Scalar>) {
+    if (rest != Scalar(0)) throw Irrational("an angle that is not a multiple of 90 degrees (its sine and cosine)");
+  } else {
+    const Scalar rad = rest * pi<Scalar>() / Scalar(180);
+    if (rest != Scalar(0)) {
+      s = sin(rad);
+      c = cos(rad);
+    }
+  }
   if (q == Scalar(0)) return {s, c};
   if (q == Scalar(1)) return {c, -s};
   if (q == Scalar(2)) return {-s, -c};
@@ -72,9 +77,19 @@ Mat3<Scalar> rotation_zyx_deg(const Scalar& yaw, const Scalar& pitch, const Scal
 // (Gram-Schmidt) and normalised, z = n x t. Columns of the result are n, t, z. The caller has checked
 // that n is non-zero and t is not parallel to n.
 template <typename Scalar>
+Vec3<Scalar> unit(const Vec3<Scalar>& v, const char* what) {
+  if constexpr (is_exact_v<Scalar>) {
+    return v / exact_sqrt(v.squaredNorm(), std::string("the length of ") + what);
+  } else {
+    (void)what;
+    return v.normalized();
+  }
+}
+
+template <typename Scalar>
 Mat3<Scalar> contact_frame_from_vectors(const Vec3<Scalar>& normal, const Vec3<Scalar>& tangent) {
-  const Vec3<Scalar> n = normal.normalized();
-  const Vec3<Scalar> t = (tangent - n * n.dot(tangent)).normalized();
+  const Vec3<Scalar> n = unit(normal, "the contact normal");
+  const Vec3<Scalar> t = unit(Vec3<Scalar>(tangent - n * n.dot(tangent)), "the contact tangent (made orthogonal to the normal)");
   Mat3<Scalar> r;
   r.col(0) = n;
   r.col(1) = t;

@@ -1,7 +1,11 @@
 // Fixed-size Eigen types and exact constants shared by every algorithm of impact3d::numeric.
 #pragma once
 
+#include <limits>
+
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <boost/math/constants/constants.hpp>
 
 namespace impact3d {
@@ -20,7 +24,15 @@ Scalar ratio(long long p, long long q) {
 
 template <typename Scalar>
 Scalar pi() {
+  static_assert(!std::numeric_limits<Scalar>::is_exact, "pi has no exact value");
   return boost::math::constants::pi<Scalar>();
+}
+
+// x = J^-1 b for a symmetric positive definite J: Cholesky for floating types, LU for exact ones.
+template <typename Scalar, typename Rhs>
+auto spd_solve(const Eigen::Matrix<Scalar, 3, 3>& J, const Rhs& b) {
+  if constexpr (std::numeric_limits<Scalar>::is_exact) return J.fullPivLu().solve(b).eval();
+  else return J.llt().solve(b).eval();
 }
 
 // [r]x: the matrix with skew(r) * p == r x p.

@@ -27,7 +27,9 @@ UnitFactors<Scalar> unit_factors(Units u) {
   f.length = ft;
   f.velocity = ratio<Scalar>(44704, 100000);
   f.inertia = lbf * ft;                 // lbf ft s^2 = slug ft^2
-  f.angular_velocity = pi<Scalar>() / Scalar(180);  // deg/s
+  // deg/s: pi / 180 has no exact value; exact cases in US units must have no angular velocity.
+  if constexpr (std::numeric_limits<Scalar>::is_exact) f.angular_velocity = Scalar(0);
+  else f.angular_velocity = pi<Scalar>() / Scalar(180);
   f.impulse = lbf;                      // lbf s
   f.energy = lbf * ft;                  // ft lbf
   return f;

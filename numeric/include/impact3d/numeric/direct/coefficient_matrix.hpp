@@ -19,7 +19,7 @@ Mat3<Scalar> coefficient_matrix(const Scene<Scalar>& s) {
   for (int i = 0; i < 2; ++i) {
     const auto& b = s.body[i];
     const Mat3<Scalar> S = skew(b.p_CgIc_B);
-    const Mat3<Scalar> JinvS = b.J_B.llt().solve(S);
+    const Mat3<Scalar> JinvS = spd_solve(b.J_B, S);
     const Mat3<Scalar> T = R_CB(s, i);
     K += m_prime * (T * (S.transpose() * JinvS) * T.transpose());
   }

@@ -5,10 +5,29 @@
 #include <cmath>
 #include <string>
 
+#include "impact3d/numeric/exact.hpp"
 #include "impact3d/numeric/problem.hpp"
 #include "impact3d/numeric/strategy.hpp"
 
 namespace impact3d::strategies {
+
+// The size that decides whether a direction is lost in rounding; exact types test for zero alone.
+template <typename Scalar>
+Scalar magnitude(const Vec3<Scalar>& v) {
+  if constexpr (is_exact_v<Scalar>) return Scalar(0);
+  else return v.norm();
+}
+
+// |(a, b)|; exact types take the root only when it is rational.
+template <typename Scalar>
+Scalar plane_length(const Scalar& a, const Scalar& b) {
+  if constexpr (is_exact_v<Scalar>) {
+    return exact_sqrt(Scalar(a * a + b * b), "the direction of the solution plane (|(P_t, P_z)| or |(V_rt, V_rz)|)");
+  } else {
+    using std::hypot;
+    return hypot(a, b);
+  }
+}
 
 // The plane through n containing the contact-plane direction (d_t, d_z); when that direction is lost in
 // rounding (relative to `scale`) the t axis is used and `undefined` is recorded as a warning. The plane
@@ -16,22 +35,22 @@ namespace impact3d::strategies {
 template <typename Scalar>
 PlaneAxes<Scalar> solution_plane(const Problem<Scalar>& p, const Scalar& d_t, const Scalar& d_z, const Scalar& scale,
                                  ImpulseSolution<Scalar>& out, const std::string& undefined) {
-  using std::atan2;
-  using std::hypot;
-  const Scalar length = hypot(d_t, d_z);
+  const Scalar length = plane_length(d_t, d_z);
   PlaneAxes<Scalar> ax{Scalar(1), Scalar(0)};
   if (p.negligible(length, scale))
     out.warnings.push_back({WarningCode::plane_undefined, undefined});
   else
     ax = {Scalar(d_t / length), Scalar(d_z / length)};
-  out.plane_angle_deg = atan2(ax.s, ax.c) * Scalar(180) / pi<Scalar>();
+  if constexpr (!is_exact_v<Scalar>) {  // an angle is not rational; the exact report takes it at 100 digits
+    using std::atan2;
+    out.plane_angle_deg = atan2(ax.s, ax.c) * Scalar(180) / pi<Scalar>();
+  }
   return ax;
 }
 
 template <typename Scalar>
 void flag_if_not_finite(ImpulseSolution<Scalar>& out, const Scalar& value, const std::string& name) {
-  using std::isfinite;
-  if (!isfinite(value))
+  if (!is_finite(value))
     out.warnings.push_back({WarningCode::non_physical_limit,
                             name + " is undefined: the normal impulse of the solution that defines it is zero"});
 }

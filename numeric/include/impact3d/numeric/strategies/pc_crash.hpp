@@ -14,13 +14,12 @@ namespace impact3d::strategies {
 
 template <typename Engine, typename Scalar>
 ImpulseSolution<Scalar> pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec) {
-  using std::hypot;
   ImpulseSolution<Scalar> out;
   const Vec3<Scalar> P_fi = Engine::full_impact(p, p.restitution);
-  const PlaneAxes<Scalar> ax = solution_plane(p, P_fi.y(), P_fi.z(), Scalar(P_fi.norm()), out,
+  const PlaneAxes<Scalar> ax = solution_plane(p, P_fi.y(), P_fi.z(), magnitude(P_fi), out,
                                                "phi_FI (eq 15) is undefined: the Full Impact has no contact-plane "
                                                "impulse; the t axis (phi_FI = 0) is used");
-  const Scalar P_cp = hypot(P_fi.y(), P_fi.z());
+  const Scalar P_cp = plane_length(P_fi.y(), P_fi.z());
   const Scalar gir = P_cp / P_fi.x();
   out.gir = gir;
   out.cir = Engine::plane_ratio(p, ax, p.restitution, "pc-crash CIR (eq 19)");

@@ -10,7 +10,7 @@ namespace impact3d::strategies {
 template <typename Engine, typename Scalar>
 ImpulseSolution<Scalar> wach(const Problem<Scalar>& p, const Wach<Scalar>& spec) {
   ImpulseSolution<Scalar> out;
-  const PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), Scalar(p.V_ri.norm()), out,
+  const PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), magnitude(p.V_ri), out,
                                                "phi (eq 21) is undefined: there is no initial sliding velocity; "
                                                "the t axis (phi = 0) is used");
   out.cir = Engine::plane_ratio(p, ax, p.restitution, "wach CIR (eq 19)");
