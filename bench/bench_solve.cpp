@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "impact3d/case/read_case.hpp"
+#include "impact3d/numeric/exact_analysis.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 
 using namespace impact3d;
@@ -54,6 +55,18 @@ void solve(benchmark::State& state) {
   state.counters["cases/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+// Exact rational arithmetic on a case whose rotations are rational (K and every strategy as fractions).
+void solve_exact(benchmark::State& state) {
+  std::ifstream in(IMPACT3D_BENCH_EXACT_CASE);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const io::CaseSpec c = io::read_case(ss.str());
+  const Scene<rational> s = io::to_scene<rational>(c);
+  const auto st = io::to_strategies<rational>(c);
+  for (auto _ : state) benchmark::DoNotOptimize(exact_analyze(s, st));
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
 template <typename T>
 void result_json(benchmark::State& state) {
   const auto a = analyze(io::to_scene<T>(spec()), io::to_strategies<T>(spec()));
@@ -79,6 +92,7 @@ BENCHMARK(solve<mp::float50, Engine::generated>);
 BENCHMARK(solve<mp::float50, Engine::direct>);
 BENCHMARK(solve<mp::float100, Engine::generated>);
 BENCHMARK(solve<mp::float100, Engine::direct>);
+BENCHMARK(solve_exact);
 BENCHMARK(result_json<double>);
 BENCHMARK(result_json<mp::float100>);
 

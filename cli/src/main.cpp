@@ -9,7 +9,7 @@
 #include "impact3d/case/read_case.hpp"
 #include "compare.hpp"
 #include "render.hpp"
-#include "verify.hpp"
+#include "impact3d/verification/verify.hpp"
 
 namespace {
 
@@ -91,14 +91,14 @@ int main(int argc, char** argv) {
   compare_cmd->add_option("--atol", copt.atol, "absolute tolerance in the case's units (default 1e-9)");
   compare_cmd->add_flag("--all", copt.all_fields, "also require the reference's fields beyond the contract");
   auto* verify_cmd = app.add_subcommand("verify", "every engine at every precision against the 100-digit solve");
-  impact3d::cli::VerifyOptions vopt;
+  impact3d::verification::VerifyOptions vopt;
   verify_cmd->add_option("inputs", vopt.inputs, "case files or directories (e.g. examples verification/cases)");
   verify_cmd->add_option("--random", vopt.random, "add this many seeded random collisions");
   verify_cmd->add_option("--seed", vopt.seed, "seed of the random collisions (default 1)");
   CLI11_PARSE(app, argc, argv);
   if (verify_cmd->parsed()) {
     try {
-      return impact3d::cli::verify(vopt);
+      return impact3d::verification::verify(vopt);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "impact3d: error: %s\n", e.what());
       return kBadInput;

@@ -13,7 +13,7 @@
 #include "impact3d/numeric/exact_analysis.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 
-namespace impact3d::cli {
+namespace impact3d::verification {
 namespace {
 
 namespace fs = std::filesystem;
@@ -278,4 +278,4 @@ int verify(const VerifyOptions& o) {
   return ok ? 0 : 1;
 }
 
-}  // namespace impact3d::cli
+}  // namespace impact3d::verification

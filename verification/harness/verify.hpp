@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace impact3d::cli {
+namespace impact3d::verification {
 
 struct VerifyOptions {
   std::vector<std::string> inputs;  // case files or directories of them
@@ -18,4 +18,4 @@ struct VerifyOptions {
 // decisions (regimes, plane fallbacks), 1 otherwise.
 int verify(const VerifyOptions& o);
 
-}  // namespace impact3d::cli
+}  // namespace impact3d::verification
