@@ -8,6 +8,7 @@
 
 #include "impact3d/case/read_case.hpp"
 #include "compare.hpp"
+#include "plot.hpp"
 #include "render.hpp"
 #include "impact3d/verification/verify.hpp"
 
@@ -95,7 +96,26 @@ int main(int argc, char** argv) {
   verify_cmd->add_option("inputs", vopt.inputs, "case files or directories (e.g. examples verification/cases)");
   verify_cmd->add_option("--random", vopt.random, "add this many seeded random collisions");
   verify_cmd->add_option("--seed", vopt.seed, "seed of the random collisions (default 1)");
+  auto* plot_cmd = app.add_subcommand("plot", "draw the impulse-space figures and sweeps of a case (gnuplot)");
+  std::string plot_case;
+  impact3d::cli::PlotOptions popt;
+  plot_cmd->add_option("case", plot_case, "case file (JSON)")->required();
+  plot_cmd->add_option("-o,--output", popt.out_dir, "directory for the figures, their scripts and data")->required();
+  plot_cmd->add_flag("--png", popt.png, "PNG instead of SVG");
   CLI11_PARSE(app, argc, argv);
+  if (plot_cmd->parsed()) {
+    try {
+      const auto spec = impact3d::io::read_case(read_file(plot_case));
+      std::fputs(impact3d::cli::plot(spec, popt).c_str(), stdout);
+      return 0;
+    } catch (const impact3d::io::CaseError& e) {
+      std::fprintf(stderr, "impact3d: error: %s: %s\n", plot_case.c_str(), e.line().c_str());
+      return kBadInput;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "impact3d: error: %s: %s\n", plot_case.c_str(), e.what());
+      return kBadInput;
+    }
+  }
   if (verify_cmd->parsed()) {
     try {
       return impact3d::verification::verify(vopt);

@@ -1,0 +1,119 @@
+// impact3d plot: every figure of every example renders, the files are valid and non-empty, and the
+// solution points drawn (read back from the data the figures are drawn from) are the computed impulses.
+#include <catch2/catch.hpp>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kWork = fs::temp_directory_path() / fmt::format("impact3d-plot-{}", ::getpid());
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+int run(const std::string& cmd) {
+  const int raw = std::system(cmd.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+// Rows of NAME.points.csv after the header: label and numbers.
+std::vector<std::pair<std::string, std::vector<double>>> points(const fs::path& p) {
+  std::vector<std::pair<std::string, std::vector<double>>> rows;
+  std::istringstream in(slurp(p));
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string cell, label;
+    std::getline(ss, label, ',');
+    std::vector<double> v;
+    while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
+    rows.push_back({label, v});
+  }
+  return rows;
+}
+
+bool near(double a, double b) { return std::fabs(a - b) <= 1e-12 * (std::fabs(b) + 1); }  // 17-digit text round trip
+
+}  // namespace
+
+TEST_CASE("every figure of every example renders as SVG and draws the computed impulses", "[plot]") {
+  for (const auto& entry : fs::directory_iterator(IMPACT3D_EXAMPLES_DIR)) {
+    if (entry.path().extension() != ".json") continue;
+    const std::string name = entry.path().stem().string();
+    INFO(name);
+    const fs::path out = kWork / name;
+    REQUIRE(run(fmt::format("'{}' plot '{}' -o '{}' >/dev/null", IMPACT3D_CLI, entry.path().string(), out.string())) == 0);
+    REQUIRE(run(fmt::format("'{}' solve '{}' --format json > '{}/solve.json'", IMPACT3D_CLI, entry.path().string(), out.string())) == 0);
+    const auto result = nlohmann::json::parse(slurp(out / "solve.json"));
+    const std::size_t n = result["results"].size();
+    std::vector<std::string> figures{"contact_plane", "impulse_space"};
+    for (std::size_t k = 1; k <= n; ++k)
+      for (const char* f : {"solution_plane_", "sweep_mu_", "sweep_eps_"}) figures.push_back(f + std::to_string(k));
+    for (const auto& f : figures) {
+      INFO(f);
+      const std::string svg = slurp(out / (f + ".svg"));
+      CHECK(svg.size() > 1000);
+      CHECK(svg.rfind("<?xml", 0) == 0);
+      CHECK(svg.find("<svg") != std::string::npos);
+      CHECK(svg.find("</svg>") != std::string::npos);
+    }
+    // The contact-plane view: rows 3.. are the strategies' (P_t, P_z), in the result's units.
+    const auto cp = points(out / "contact_plane.points.csv");
+    REQUIRE(cp.size() == n + 2);
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto& P = result["results"][k]["impulse"]["contact"];
+      CHECK(near(cp[k + 2].second[0], P[1].get<double>()));
+      CHECK(near(cp[k + 2].second[1], P[2].get<double>()));
+    }
+    // The impulse-space view: (P_t, P_z, P_n), after the maximum-energy-loss point.
+    const auto is = points(out / "impulse_space.points.csv");
+    REQUIRE(is.size() == n + 1);
+    const auto& mx = result["impulse_space"]["max_energy_loss_impulse"];
+    CHECK(near(is[0].second[2], mx[0].get<double>()));
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto& P = result["results"][k]["impulse"]["contact"];
+      CHECK(near(is[k + 1].second[0], P[1].get<double>()));
+      CHECK(near(is[k + 1].second[2], P[0].get<double>()));
+    }
+    // Each solution plane: (in-plane impulse, P_n) = (|(P_t, P_z)|, P_n) for the plane through it.
+    for (std::size_t k = 0; k < n; ++k) {
+      const auto sp = points(out / fmt::format("solution_plane_{}.points.csv", k + 1));
+      const auto& P = result["results"][k]["impulse"]["contact"];
+      REQUIRE(sp.size() == 1);
+      CHECK(near(sp[0].second[0], std::hypot(P[1].get<double>(), P[2].get<double>())));
+      CHECK(near(sp[0].second[1], P[0].get<double>()));
+    }
+  }
+}
+
+TEST_CASE("--png writes PNG files", "[plot]") {
+  const fs::path out = kWork / "png";
+  REQUIRE(run(fmt::format("'{}' plot '{}/fig8_side_impact.json' -o '{}' --png >/dev/null", IMPACT3D_CLI, IMPACT3D_EXAMPLES_DIR,
+                          out.string())) == 0);
+  const std::string png = slurp(out / "contact_plane.png");
+  REQUIRE(png.size() > 1000);
+  CHECK(png.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
+}
+
+TEST_CASE("without gnuplot: one clear line and a non-zero exit", "[plot]") {
+  const fs::path err = kWork / "err.txt";
+  fs::create_directories(kWork);
+  const int status = run(fmt::format("env PATH=/nonexistent '{}' plot '{}/fig8_side_impact.json' -o '{}' 2>'{}' >/dev/null", IMPACT3D_CLI,
+                                     IMPACT3D_EXAMPLES_DIR, (kWork / "nogp").string(), err.string()));
+  CHECK(status == 1);
+  CHECK(slurp(err).find("gnuplot not found") != std::string::npos);
+}
