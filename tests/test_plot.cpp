@@ -100,7 +100,7 @@ TEST_CASE("every figure of every example renders as SVG and draws the computed i
   }
 }
 
-TEST_CASE("--png writes PNG files", "[plot]") {
+TEST_CASE("PNG files on request (option --png)", "[plot]") {
   const fs::path out = kWork / "png";
   REQUIRE(run(fmt::format("'{}' plot '{}/fig8_side_impact.json' -o '{}' --png >/dev/null", IMPACT3D_CLI, IMPACT3D_EXAMPLES_DIR,
                           out.string())) == 0);
