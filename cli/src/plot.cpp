@@ -99,6 +99,17 @@ std::string header_lines(const Context& c, const std::string& name, const std::s
 
 std::string label(const io::StrategySpec& s) { return io::strategy_label(s); }
 
+// `plot` (or `splot`) of the data sets of FILE.dat in order, each with its line style and title.
+struct Series {
+  std::string style, title;
+};
+std::string series(const std::string& verb, const std::string& file, const std::vector<Series>& list) {
+  std::string out = verb + " ";
+  for (std::size_t i = 0; i < list.size(); ++i)
+    out += fmt::format("{}'{}.dat' index {} with lines {} title '{}'", i ? ", \\\n      " : "", file, i, list[i].style, list[i].title);
+  return out;
+}
+
 // The point of the Critical Impulse Line on the case's restitution plane: no sliding at all.
 V3 critical_line_point(const Problem<double>& p) {
   return direct::DirectEngine::brach_impulse(p, std::optional<double>(), std::optional<double>(), "critical impulse line");
@@ -151,11 +162,11 @@ void contact_plane_view(Context& c) {
   std::string gp = header_lines(c, "contact_plane", "contact-plane view on the restitution plane (eps = " + c.spec.restitution.text + ")");
   gp += fmt::format("set xlabel \"P_t [{}]\"\nset ylabel \"P_z [{}]\"\n", c.imp_unit, c.imp_unit);
   gp += fmt::format("set xrange [{:.6g}:{:.6g}]\nset yrange [{:.6g}:{:.6g}]\n", x0 - margin, x1 + margin, y0 - margin, y1 + margin);
-  gp += "plot 'contact_plane.dat' index 0 with lines lw 2 lc rgb '#1f77b4' title 't no-sliding plane', \\\n"
-        "     'contact_plane.dat' index 1 with lines lw 2 lc rgb '#ff7f0e' title 'z no-sliding plane', \\\n"
-        "     'contact_plane.dat' index 2 with lines dt 2 lc rgb '#2ca02c' title 'PC-Crash plane (phi_FI)', \\\n"
-        "     'contact_plane.dat' index 3 with lines dt 3 lc rgb '#9467bd' title 'Wach plane (phi)', \\\n"
-        "     'contact_plane.dat' index 4 with lines lc rgb '#7f7f7f' title 'GIR cone'";
+  gp += series("plot", "contact_plane", {{"lw 2 lc rgb '#1f77b4'", "t no-sliding plane"},
+                                         {"lw 2 lc rgb '#ff7f0e'", "z no-sliding plane"},
+                                         {"dt 2 lc rgb '#2ca02c'", "PC-Crash plane (phi_FI)"},
+                                         {"dt 3 lc rgb '#9467bd'", "Wach plane (phi)"},
+                                         {"lc rgb '#7f7f7f'", "GIR cone"}});
   gp += points_file(dir, "contact_plane", "label,P_t,P_z", pts, false) + "\n";
   run_gnuplot(c, "contact_plane", gp);
 }
@@ -194,13 +205,12 @@ void solution_plane_view(Context& c, std::size_t k) {
                                                      std::atan2(ax.s, ax.c) * 180 / M_PI));
   gp += fmt::format("set xlabel \"in-plane impulse P_u [{}]\"\nset ylabel \"P_n [{}]\"\n", c.imp_unit, c.imp_unit);
   gp += fmt::format("set xrange [{:.6g}:{:.6g}]\nset yrange [0:{:.6g}]\n", xmin - pad, xmax + pad, ymax);
-  gp += fmt::format("plot '{0}.dat' index 0 with lines lw 2 lc rgb '#000000' title 'maximum compression', \\\n"
-                    "     '{0}.dat' index 1 with lines dt 2 lc rgb '#000000' title 'restitution (eps = {1})', \\\n"
-                    "     '{0}.dat' index 2 with lines lw 2 lc rgb '#1f77b4' title 'no sliding along the plane', \\\n"
-                    "     '{0}.dat' index 3 with lines lw 2 lc rgb '#ff7f0e' title 'no sliding across the plane', \\\n"
-                    "     '{0}.dat' index 4 with lines dt 3 lc rgb '#2ca02c' title 'CIR = {2:.4g}', \\\n"
-                    "     '{0}.dat' index 5 with lines dt 4 lc rgb '#d62728' title 'GIR = {3:.4g}'",
-                    name, c.spec.restitution.text, cir, gir);
+  gp += series("plot", name, {{"lw 2 lc rgb '#000000'", "maximum compression"},
+                              {"dt 2 lc rgb '#000000'", "restitution (eps = " + c.spec.restitution.text + ")"},
+                              {"lw 2 lc rgb '#1f77b4'", "no sliding along the plane"},
+                              {"lw 2 lc rgb '#ff7f0e'", "no sliding across the plane"},
+                              {"dt 3 lc rgb '#2ca02c'", fmt::format("CIR = {:.4g}", cir)},
+                              {"dt 4 lc rgb '#d62728'", fmt::format("GIR = {:.4g}", gir)}});
   gp += points_file(dir, name, "label,P_u,P_n", {sol}, false) + "\n";
   run_gnuplot(c, name, gp);
 }
@@ -241,11 +251,11 @@ void impulse_space_view(Context& c) {
   write_file(dir / "impulse_space.dat", dat);
   std::string gp = header_lines(c, "impulse_space", "impulse space: fundamental planes, restitution plane, Critical Impulse Line", 1000, 800);
   gp += fmt::format("set xlabel \"P_t [{0}]\"\nset ylabel \"P_z [{0}]\"\nset zlabel \"P_n [{0}]\" rotate\nset view 62, 35\nset xyplane 0\n", c.imp_unit);
-  gp += "splot 'impulse_space.dat' index 0 with lines lc rgb '#000000' title 'maximum-compression plane', \\\n"
-        "      'impulse_space.dat' index 1 with lines lc rgb '#1f77b4' title 't no-sliding plane', \\\n"
-        "      'impulse_space.dat' index 2 with lines lc rgb '#ff7f0e' title 'z no-sliding plane', \\\n"
-        "      'impulse_space.dat' index 3 with lines dt 2 lc rgb '#7f7f7f' title 'restitution plane', \\\n"
-        "      'impulse_space.dat' index 4 with lines lw 3 lc rgb '#d62728' title 'Critical Impulse Line'";
+  gp += series("splot", "impulse_space", {{"lc rgb '#000000'", "maximum-compression plane"},
+                                          {"lc rgb '#1f77b4'", "t no-sliding plane"},
+                                          {"lc rgb '#ff7f0e'", "z no-sliding plane"},
+                                          {"dt 2 lc rgb '#7f7f7f'", "restitution plane"},
+                                          {"lw 3 lc rgb '#d62728'", "Critical Impulse Line"}});
   gp += points_file(dir, "impulse_space", "label,P_t,P_z,P_n", pts, true) + "\n";
   run_gnuplot(c, "impulse_space", gp);
 }
