@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -11,23 +10,17 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "impact3d/case/case_spec.hpp"
+
 namespace impact3d::cli {
 namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) throw std::runtime_error(p.string() + ": cannot read the file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 json parse(const fs::path& p) {
   try {
-    return json::parse(slurp(p));
+    return json::parse(io::read_text_file(p.string()));
   } catch (const json::parse_error& e) {
     throw std::runtime_error(p.string() + ": invalid JSON");
   }
@@ -145,7 +138,7 @@ class Comparer {
 // or from the top when they start with "coefficients.".
 std::map<std::string, json> read_csv(const fs::path& p) {
   std::map<std::string, json> docs;
-  std::istringstream in(slurp(p));
+  std::istringstream in(io::read_text_file(p.string()));
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(p.string() + ": empty CSV");
   auto split = [](const std::string& s) {

@@ -1,8 +1,6 @@
 // impact3d: solve a two-vehicle 3D collision case by the strategies of Marine's paper.
 #include <cstdio>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include <CLI/CLI.hpp>
 
@@ -18,12 +16,13 @@ namespace {
 constexpr int kBadInput = 1;
 constexpr int kInternal = 3;
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw impact3d::io::CaseError(path, "cannot read the file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+// One line for an error of `verify` or `compare`: a case error names its file and field.
+int report(const std::exception& e) {
+  if (const auto* c = dynamic_cast<const impact3d::io::CaseError*>(&e))
+    std::fprintf(stderr, "impact3d: error: %s\n", c->line().c_str());
+  else
+    std::fprintf(stderr, "impact3d: error: %s\n", e.what());
+  return kBadInput;
 }
 
 int solve(const std::string& case_path, const std::vector<std::string>& strategies, const std::string& precision,
@@ -31,7 +30,7 @@ int solve(const std::string& case_path, const std::vector<std::string>& strategi
   using namespace impact3d;
   std::string output;
   try {
-    io::CaseSpec spec = io::read_case(read_file(case_path));
+    io::CaseSpec spec = io::read_case(io::read_text_file(case_path));
     if (!strategies.empty()) {
       spec.strategies.clear();
       for (std::size_t i = 0; i < strategies.size(); ++i)
@@ -105,7 +104,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (plot_cmd->parsed()) {
     try {
-      const auto spec = impact3d::io::read_case(read_file(plot_case));
+      const auto spec = impact3d::io::read_case(impact3d::io::read_text_file(plot_case));
       std::fputs(impact3d::cli::plot(spec, popt).c_str(), stdout);
       return 0;
     } catch (const impact3d::io::CaseError& e) {
@@ -120,16 +119,14 @@ int main(int argc, char** argv) {
     try {
       return impact3d::verification::verify(vopt);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "impact3d: error: %s\n", e.what());
-      return kBadInput;
+      return report(e);
     }
   }
   if (compare_cmd->parsed()) {
     try {
       return impact3d::cli::compare(reference, other, copt);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "impact3d: error: %s\n", e.what());
-      return kBadInput;
+      return report(e);
     }
   }
   if (digits == 0 && precision == "double") digits = 10;

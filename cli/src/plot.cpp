@@ -20,8 +20,9 @@ using V3 = Vec3<double>;
 struct Context {
   const io::CaseSpec& spec;
   const PlotOptions& o;
+  const Scene<double>& scene;  // SI
   const Analysis<double>& a;
-  Problem<double> p;  // SI
+  Problem<double> p;
   UnitFactors<double> f;
   std::string imp_unit, vel_unit, energy_unit;
   std::string written;
@@ -263,7 +264,6 @@ void impulse_space_view(Context& c) {
 // Post-impact sliding along t and z, swerve and energy loss against mu (0 to 1.5 GIR) and against eps.
 void sweeps(Context& c, std::size_t k) {
   const io::StrategySpec& spec = c.spec.strategies[k];
-  const Scene<double> scene = io::to_scene<double>(c.spec);
   const double gir = case_gir(c.p);
   auto with_mu = [&](double mu) -> Strategy<double> {
     switch (spec.kind) {
@@ -285,7 +285,7 @@ void sweeps(Context& c, std::size_t k) {
     bool swerve_defined = false;
     for (int i = 0; i <= n; ++i) {
       const double x = over_mu ? 1.5 * gir * i / n : static_cast<double>(i) / n;
-      Scene<double> sc = scene;
+      Scene<double> sc = c.scene;
       if (!over_mu) sc.restitution = x;
       try {
         const Solution<double> sol = analyze(sc, {over_mu ? with_mu(x) : as_given}, c.o.engine).solutions[0];
@@ -327,7 +327,7 @@ std::string plot(const io::CaseSpec& spec, const PlotOptions& o) {
   fs::create_directories(o.out_dir);
   const Scene<double> scene = io::to_scene<double>(spec);
   const Analysis<double> a = analyze(scene, io::to_strategies<double>(spec), o.engine);
-  Context c{spec, o, a, make_problem<direct::DirectEngine>(scene), unit_factors<double>(spec.units),
+  Context c{spec, o, scene, a, problem_of(a, scene.restitution), unit_factors<double>(spec.units),
             io::unit_label(spec.units, "impulse"), io::unit_label(spec.units, "velocity"), io::unit_label(spec.units, "energy"), ""};
   contact_plane_view(c);
   for (std::size_t k = 0; k < a.solutions.size(); ++k) solution_plane_view(c, k);

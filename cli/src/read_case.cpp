@@ -1,5 +1,7 @@
 // Structural validation of a case file: every rejection names the JSON path and the problem.
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <set>
 
 #include <fmt/format.h>
@@ -276,6 +278,14 @@ StrategySpec read_strategy_option(const std::string& text, int index) {
   } catch (const CaseError& e) {
     throw CaseError(label + e.path.substr(1), e.what());
   }
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw CaseError(path, "cannot read the file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 CaseSpec read_case(const std::string& json_text) {

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <random>
 #include <sstream>
@@ -79,10 +78,11 @@ std::vector<Case> collect(const VerifyOptions& o) {
       files.push_back(input);
     }
     for (const auto& f : files) {
-      std::ifstream in(f);
-      std::ostringstream ss;
-      ss << in.rdbuf();
-      cases.push_back({f.stem().string(), io::read_case(ss.str())});
+      try {
+        cases.push_back({f.stem().string(), io::read_case(io::read_text_file(f.string()))});
+      } catch (const io::CaseError& e) {
+        throw e.path == f.string() ? e : io::CaseError(f.string() + ": " + e.path, e.what());  // name the file too
+      }
     }
   }
   std::mt19937_64 g(o.seed);
@@ -256,11 +256,8 @@ int verify(const VerifyOptions& o) {
       const Vec3<rational>& P = x->results[k].solution->impulse.P_C;
       const auto& R = refs[i].solutions[k].impulse.P_C;
       for (int j = 0; j < 3; ++j) {
-        std::ostringstream n, d;
-        n << boost::multiprecision::numerator(P(j));
-        d << boost::multiprecision::denominator(P(j));
         using std::abs;
-        if (abs(R(j) - F(n.str()) / F(d.str())) > F("1e-95") * R.norm()) {
+        if (abs(R(j) - to_floating<F>(P(j))) > F("1e-95") * R.norm()) {
           ok = false;
           report += fmt::format("exact: {} result {}: the 100-digit impulse differs from the exact one\n", cases[i].name, k);
         }

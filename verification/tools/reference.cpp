@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "impact3d/case/read_case.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
@@ -14,13 +13,6 @@ using namespace impact3d;
 using F = mp::float100;
 
 namespace {
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // Relative difference of the two engines' impulses, the largest over the case's strategies.
 F engine_difference(const Analysis<F>& a, const Analysis<F>& b) {
@@ -44,7 +36,7 @@ int main(int argc, char** argv) {
   for (int i = 3; i < argc; ++i) {
     const fs::path in = argv[i];
     try {
-      const io::CaseSpec spec = io::read_case(slurp(in));
+      const io::CaseSpec spec = io::read_case(io::read_text_file(in.string()));
       const Scene<F> scene = io::to_scene<F>(spec);
       const auto strategies = io::to_strategies<F>(spec);
       const Analysis<F> a = analyze(scene, strategies, Engine::generated);

@@ -68,4 +68,7 @@ struct CaseSpec {
 // Parses and validates everything that needs no arithmetic; throws CaseError.
 CaseSpec read_case(const std::string& json_text);
 
+// The whole file; CaseError (path = the file) when it cannot be read.
+std::string read_text_file(const std::string& path);
+
 }  // namespace impact3d::io

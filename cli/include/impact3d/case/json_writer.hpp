@@ -21,11 +21,7 @@ class JsonWriter {
     pending_key_ = true;
     return *this;
   }
-  void raw(const std::string& number_text) {
-    if (number_text.find_first_of("ni") != std::string::npos)  // inf, nan
-      throw std::runtime_error("a result is not finite (" + number_text + ")");
-    value(number_text);
-  }
+  void raw(const std::string& number_text) { value(finite(number_text)); }
   void string(const std::string& s) { value(quote(s)); }
   void boolean(bool b) { value(b ? "true" : "false"); }
   void null() { value("null"); }
@@ -33,9 +29,7 @@ class JsonWriter {
   void number_array(const std::vector<std::string>& items) {
     std::string line = "[";
     for (std::size_t i = 0; i < items.size(); ++i) {
-      if (items[i].find_first_of("ni") != std::string::npos)
-        throw std::runtime_error("a result is not finite (" + items[i] + ")");
-      line += (i ? ", " : "") + items[i];
+      line += (i ? ", " : "") + finite(items[i]);
     }
     value(line + "]");
   }
@@ -62,6 +56,11 @@ class JsonWriter {
   std::vector<bool> has_items_;
   bool pending_key_ = false;
 
+  static const std::string& finite(const std::string& number_text) {
+    if (number_text.find_first_of("ni") != std::string::npos)  // inf, nan
+      throw std::runtime_error("a result is not finite (" + number_text + ")");
+    return number_text;
+  }
   void item() {
     if (pending_key_) return;
     if (!has_items_.empty()) {

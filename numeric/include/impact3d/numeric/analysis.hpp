@@ -69,6 +69,13 @@ Analysis<Scalar> analyze_with(const Scene<Scalar>& s, const std::vector<Strategy
   return a;
 }
 
+// The problem an analysis solved (m', K, V_ri, kappa), with the scene's restitution: what further
+// solves of the same collision (figures, sweeps of the constraints) start from.
+template <typename Scalar>
+Problem<Scalar> problem_of(const Analysis<Scalar>& a, const Scalar& restitution) {
+  return {a.m_prime, a.K, a.V_ri, restitution, a.kappa};
+}
+
 // Throws SolveError when the bodies do not approach or a strategy's constraints admit no impulse.
 template <typename Scalar>
 Analysis<Scalar> analyze(const Scene<Scalar>& s, const std::vector<Strategy<Scalar>>& strategies,

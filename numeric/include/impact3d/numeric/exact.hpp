@@ -79,6 +79,12 @@ Scalar floor_of(const Scalar& x) {
   }
 }
 
+// A fraction in a floating type, numerator and denominator each read exactly (to the type's precision).
+template <typename Float>
+Float to_floating(const rational& q) {
+  return Float(boost::multiprecision::numerator(q).str()) / Float(boost::multiprecision::denominator(q).str());
+}
+
 // A quantity of an exact computation that is not rational.
 struct Irrational : std::runtime_error {
   using std::runtime_error::runtime_error;

@@ -36,11 +36,6 @@ struct BodyChange {
 };
 
 template <typename Scalar>
-Scalar degrees(const Scalar& rad) {
-  return rad * Scalar(180) / pi<Scalar>();
-}
-
-template <typename Scalar>
 BodyChange<Scalar> body_change(const RigidBody<Scalar>& before, const RigidBody<Scalar>& after) {
   using std::atan2;
   using std::floor;

@@ -28,6 +28,11 @@ Scalar pi() {
   return boost::math::constants::pi<Scalar>();
 }
 
+template <typename Scalar>
+Scalar degrees(const Scalar& rad) {
+  return rad * Scalar(180) / pi<Scalar>();
+}
+
 // x = J^-1 b for a symmetric positive definite J: Cholesky for floating types, LU for exact ones.
 template <typename Scalar, typename Rhs>
 auto spd_solve(const Eigen::Matrix<Scalar, 3, 3>& J, const Rhs& b) {

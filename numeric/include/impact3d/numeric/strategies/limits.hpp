@@ -43,7 +43,7 @@ PlaneAxes<Scalar> solution_plane(const Problem<Scalar>& p, const Scalar& d_t, co
     ax = {Scalar(d_t / length), Scalar(d_z / length)};
   if constexpr (!is_exact_v<Scalar>) {  // an angle is not rational; the exact report takes it at 100 digits
     using std::atan2;
-    out.plane_angle_deg = atan2(ax.s, ax.c) * Scalar(180) / pi<Scalar>();
+    out.plane_angle_deg = degrees(Scalar(atan2(ax.s, ax.c)));
   }
   return ax;
 }
