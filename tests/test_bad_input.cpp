@@ -1,42 +1,18 @@
 // The CLI on malformed cases: exactly one line on stderr naming the JSON path and the problem, exit
 // status 1, nothing on stdout. Expected lines are in bad_input/expected.tsv, one per corpus file.
 #include <catch2/catch.hpp>
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #include <fmt/format.h>
 
+#include "cli_process.hpp"
+
 namespace fs = std::filesystem;
+using namespace impact3d::test;
 
 namespace {
-
-struct Run {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-Run run_cli(const std::string& args) {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-bad-input-{}", ::getpid());
-  fs::create_directories(dir);
-  const std::string cmd = fmt::format("'{}' {} >'{}' 2>'{}' </dev/null", IMPACT3D_CLI, args, (dir / "out").string(),
-                                      (dir / "err").string());
-  const int raw = std::system(cmd.c_str());
-  Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out"), slurp(dir / "err")};
-  fs::remove_all(dir);
-  return r;
-}
 
 std::map<std::string, std::string> expected_lines() {
   std::map<std::string, std::string> m;

@@ -15,12 +15,6 @@ namespace {
 const char* kRational[] = {"planar_right_angle.json", "restitution_zero.json", "restitution_one.json",
                            "hard_lever_arms_near_zero.json", "exact_rational_rotations.json"};
 
-mp::float100 to_float100(const rational& q) {
-  std::ostringstream n, d;
-  n << boost::multiprecision::numerator(q);
-  d << boost::multiprecision::denominator(q);
-  return mp::float100(n.str()) / mp::float100(d.str());
-}
 
 io::CaseSpec case_spec(const std::string& name) {
   return load_spec(std::string(IMPACT3D_CASES_DIR) + "/" + name);
@@ -82,7 +76,7 @@ TEST_CASE("the 100-digit solve agrees with the exact one to 95 digits", "[exact]
       if (!x.results[k].solution) continue;
       const Vec3<rational>& P = x.results[k].solution->impulse.P_C;
       for (int i = 0; i < 3; ++i) {
-        const F exact = to_float100(P(i));
+        const F exact = to_floating<F>(P(i));
         const F scale = a.solutions[k].impulse.P_C.norm();
         using std::abs;
         // 100 digits, through a solve of condition kappa <= 10 here and inputs rounded once each.

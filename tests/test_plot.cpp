@@ -1,9 +1,6 @@
 // impact3d plot: every figure of every example renders, the files are valid and non-empty, and the
 // solution points drawn (read back from the data the figures are drawn from) are the computed impulses.
 #include <catch2/catch.hpp>
-#include <sys/wait.h>
-
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,23 +8,14 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_process.hpp"
+
 namespace fs = std::filesystem;
+using namespace impact3d::test;
 
 namespace {
 
 const fs::path kWork = fs::temp_directory_path() / fmt::format("impact3d-plot-{}", ::getpid());
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-int run(const std::string& cmd) {
-  const int raw = std::system(cmd.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
 
 // Rows of NAME.points.csv after the header: label and numbers.
 std::vector<std::pair<std::string, std::vector<double>>> points(const fs::path& p) {
@@ -56,9 +44,10 @@ TEST_CASE("every figure of every example renders as SVG and draws the computed i
     const std::string name = entry.path().stem().string();
     INFO(name);
     const fs::path out = kWork / name;
-    REQUIRE(run(fmt::format("'{}' plot '{}' -o '{}' >/dev/null", IMPACT3D_CLI, entry.path().string(), out.string())) == 0);
-    REQUIRE(run(fmt::format("'{}' solve '{}' --format json > '{}/solve.json'", IMPACT3D_CLI, entry.path().string(), out.string())) == 0);
-    const auto result = nlohmann::json::parse(slurp(out / "solve.json"));
+    REQUIRE(run_cli(fmt::format("plot '{}' -o '{}'", entry.path().string(), out.string())).status == 0);
+    const Run solved = run_cli(fmt::format("solve '{}' --format json", entry.path().string()));
+    REQUIRE(solved.status == 0);
+    const auto result = nlohmann::json::parse(solved.out);
     const std::size_t n = result["results"].size();
     std::vector<std::string> figures{"contact_plane", "impulse_space"};
     for (std::size_t k = 1; k <= n; ++k)
@@ -102,18 +91,16 @@ TEST_CASE("every figure of every example renders as SVG and draws the computed i
 
 TEST_CASE("PNG files on request (option --png)", "[plot]") {
   const fs::path out = kWork / "png";
-  REQUIRE(run(fmt::format("'{}' plot '{}/fig8_side_impact.json' -o '{}' --png >/dev/null", IMPACT3D_CLI, IMPACT3D_EXAMPLES_DIR,
-                          out.string())) == 0);
+  REQUIRE(run_cli(fmt::format("plot '{}/fig8_side_impact.json' -o '{}' --png", IMPACT3D_EXAMPLES_DIR, out.string())).status == 0);
   const std::string png = slurp(out / "contact_plane.png");
   REQUIRE(png.size() > 1000);
   CHECK(png.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0);
 }
 
 TEST_CASE("without gnuplot: one clear line and a non-zero exit", "[plot]") {
-  const fs::path err = kWork / "err.txt";
-  fs::create_directories(kWork);
-  const int status = run(fmt::format("env PATH=/nonexistent '{}' plot '{}/fig8_side_impact.json' -o '{}' 2>'{}' >/dev/null", IMPACT3D_CLI,
-                                     IMPACT3D_EXAMPLES_DIR, (kWork / "nogp").string(), err.string()));
-  CHECK(status == 1);
-  CHECK(slurp(err).find("gnuplot not found") != std::string::npos);
+  const Run r = run_cli(fmt::format("plot '{}/fig8_side_impact.json' -o '{}'", IMPACT3D_EXAMPLES_DIR, (kWork / "nogp").string()),
+                        "env PATH=/nonexistent");
+  CHECK(r.status == 1);
+  CHECK(r.out.empty());
+  CHECK(r.err.find("gnuplot not found") != std::string::npos);
 }
