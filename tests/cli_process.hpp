@@ -1,6 +1,8 @@
 // Running the impact3d program from the tests: its exit status, stdout and stderr, captured apart.
 #pragma once
 
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -9,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -37,6 +40,42 @@ inline Run run_cli(const std::string& args, const std::string& prefix = "") {
   const int raw = std::system(cmd.c_str());
   Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(dir / "out"), slurp(dir / "err")};
   fs::remove_all(dir);
+  return r;
+}
+
+// `impact3d ARGS` with the arguments passed as they are (no shell: they may hold quotes and newlines),
+// in `dir` when given, with at most `cpu_seconds` of CPU time and, outside sanitizer builds (whose
+// shadow memory needs the address space), `memory_mib` of address space: a hostile input must be
+// rejected within both.
+inline Run run_argv(const std::vector<std::string>& args, const std::string& dir = "", int cpu_seconds = 20,
+                    long memory_mib = 2048) {
+  namespace fs = std::filesystem;
+  static int calls = 0;
+  const fs::path work = fs::temp_directory_path() / fmt::format("impact3d-argv-{}-{}", ::getpid(), calls++);
+  fs::create_directories(work);
+  const std::string out = (work / "out").string(), err = (work / "err").string();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int in = ::open("/dev/null", O_RDONLY), o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644),
+              e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(in, 0), ::dup2(o, 1), ::dup2(e, 2);
+    if (!dir.empty() && ::chdir(dir.c_str()) != 0) ::_exit(126);
+    const rlimit cpu{static_cast<rlim_t>(cpu_seconds), static_cast<rlim_t>(cpu_seconds)};
+    ::setrlimit(RLIMIT_CPU, &cpu);
+#ifndef IMPACT3D_SANITIZED
+    const rlimit as{static_cast<rlim_t>(memory_mib) << 20, static_cast<rlim_t>(memory_mib) << 20};
+    ::setrlimit(RLIMIT_AS, &as);
+#endif
+    std::vector<char*> argv{const_cast<char*>(IMPACT3D_CLI)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(IMPACT3D_CLI, argv.data());
+    ::_exit(127);
+  }
+  int raw = 0;
+  ::waitpid(pid, &raw, 0);
+  Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  fs::remove_all(work);
   return r;
 }
 

@@ -1,11 +1,18 @@
-// The CLI on malformed cases: exactly one line on stderr naming the JSON path and the problem, exit
-// status 1, nothing on stdout. Expected lines are in bad_input/expected.tsv, one per corpus file.
+// The CLI on malformed and hostile cases: exactly one line on stderr naming the JSON path and the
+// problem, exit status 1, nothing on stdout, within bounded time and memory, at every precision (each
+// converts the text itself). Expected lines are in bad_input/expected.tsv, one per corpus file.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
+#include <cmath>
+#include <random>
 #include <map>
+#include <vector>
 
 #include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
 
 #include "cli_process.hpp"
 
@@ -36,8 +43,14 @@ TEST_CASE("every malformed case is rejected with one line naming the field", "[b
     const std::string name = entry.path().filename().string();
     INFO(name);
     REQUIRE(expected.count(name) == 1);
-    for (const char* format : {"text", "json"}) {
-      const Run r = run_cli(fmt::format("solve '{}' --format {}", entry.path().string(), format));
+    const std::vector<std::vector<std::string>> runs = {{"--format", "text"}, {"--format", "json"}, {"--precision", "long-double"},
+                                                        {"--precision", "50"}, {"--precision", "100"}, {"--precision", "exact"}};
+    for (const auto& extra : runs) {
+      std::vector<std::string> args{"solve", entry.path().string()};
+      args.insert(args.end(), extra.begin(), extra.end());
+      // 10 s of CPU and 1 GiB: a few milliseconds and megabytes are what a rejection takes.
+      const Run r = run_argv(args, "", 10, 1024);
+      INFO(extra[0] << " " << extra[1]);
       CHECK(r.status == 1);
       CHECK(r.out.empty());
       CHECK(r.err == fmt::format("impact3d: error: {}: {}\n", entry.path().string(), expected.at(name)));
@@ -50,7 +63,46 @@ TEST_CASE("a missing case file is one clear line", "[bad-input]") {
   const Run r = run_cli("solve /nonexistent/case.json");
   CHECK(r.status == 1);
   CHECK(r.out.empty());
-  CHECK(r.err == "impact3d: error: /nonexistent/case.json: /nonexistent/case.json: cannot read the file\n");
+  CHECK(r.err == "impact3d: error: /nonexistent/case.json: cannot read the file (No such file or directory)\n");
+}
+
+TEST_CASE("an endless or oversized file is refused after the size limit", "[bad-input]") {
+  const Run zero = run_argv({"solve", "/dev/zero"}, "", 10, 1024);
+  CHECK(zero.status == 1);
+  CHECK(zero.out.empty());
+  CHECK(zero.err == "impact3d: error: /dev/zero: larger than 1048576 bytes, the limit for this input\n");
+  const Run dir = run_argv({"solve", "/"});
+  CHECK(dir.status == 1);
+  CHECK(dir.err == "impact3d: error: /: cannot read the file (a directory)\n");
+}
+
+TEST_CASE("command-line usage errors: exit 2 and one line", "[bad-input]") {
+  const std::string fig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
+  for (const auto& args : std::vector<std::vector<std::string>>{{"solve", fig8, "--digits", "0"},
+                                                                {"solve", fig8, "--format", "xml\n\x1b[2J"},
+                                                                {"solve"},
+                                                                {"frobnicate"},
+                                                                {"compare", fig8}}) {
+    const Run r = run_argv(args);
+    INFO(args.back());
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.rfind("impact3d: usage: ", 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.find('\x1b') == std::string::npos);
+  }
+}
+
+TEST_CASE("a command-line strategy that is not UTF-8 or holds control characters: one escaped line", "[bad-input]") {
+  const std::string fig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
+  const Run bad_utf8 = run_argv({"solve", fig8, "--strategy", "pc-crash:mu=\xff\xfe"});
+  CHECK(bad_utf8.status == 1);
+  CHECK(bad_utf8.out.empty());
+  CHECK(bad_utf8.err == "impact3d: error: " + fig8 + ": --strategy[0]: not valid UTF-8\n");
+  const Run control = run_argv({"solve", fig8, "--strategy", "wach\n\x1b[31m:mu=0.4"});
+  CHECK(control.status == 1);
+  CHECK(control.err == "impact3d: error: " + fig8 +
+                           ": --strategy[0].name: unknown strategy \"wach\\n\\x1B[31m\" (expected pc-crash, wach or brach)\n");
 }
 
 TEST_CASE("a bad command-line strategy names the option", "[bad-input]") {
@@ -66,4 +118,53 @@ TEST_CASE("a valid case exits 0 with output and nothing on stderr", "[bad-input]
   CHECK(r.status == 0);
   CHECK(r.err.empty());
   CHECK(r.out.find("\"results\"") != std::string::npos);
+}
+
+// Extreme but valid collisions (masses, inertias, lever arms and speeds over many decades): text and
+// JSON take the same course, and neither prints a NaN or an infinity without a warning that says so.
+TEST_CASE("extreme cases: no NaN or infinity without a warning, text and JSON agree", "[bad-input]") {
+  std::mt19937_64 g(8);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto decades = [&](double lo, double hi) { return std::pow(10.0, lo + (hi - lo) * u(g)); };
+  auto signed_decades = [&](double lo, double hi) { return (u(g) < 0.5 ? -1 : 1) * decades(lo, hi); };
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-extreme-{}", ::getpid());
+  fs::create_directories(dir);
+  int solved = 0, rejected = 0;
+  for (int i = 0; i < 60; ++i) {
+    std::string vehicles;
+    for (int k = 0; k < 2; ++k)
+      vehicles += fmt::format(R"({}{{"mass": {:.6g}, "inertia": {{"Ixx": {:.6g}, "Iyy": {:.6g}, "Izz": {:.6g}}},
+          "orientation_deg": {{"yaw": {:.6g}, "pitch": {:.6g}}}, "velocity": [{:.6g}, {:.6g}, 0],
+          "angular_velocity": [0, 0, {:.6g}], "impulse_center": [{:.6g}, {:.6g}, {:.6g}]}})",
+                              k ? "," : "", decades(-6, 11), decades(-6, 9), decades(-6, 9), decades(-6, 9), 360 * u(g) - 180,
+                              178 * u(g) - 89, signed_decades(-6, 6), signed_decades(-6, 6), signed_decades(-6, 3),
+                              signed_decades(-6, 5), signed_decades(-6, 5), signed_decades(-6, 2));
+    std::ofstream(dir / "case.json") << fmt::format(
+        R"({{"vehicles": [{}], "contact": {{"normal_yaw_deg": {:.6g}, "normal_pitch_deg": {:.6g}}}, "restitution": {:.6g},
+            "strategy": [{{"name": "pc-crash", "mu": {:.6g}}}, {{"name": "wach", "mu": {:.6g}, "limit": "gir"}},
+                         {{"name": "brach", "mu_t": "critical", "mu_z": "critical"}}]}})",
+        vehicles, 360 * u(g) - 180, 178 * u(g) - 89, u(g), 2 * u(g), 2 * u(g));
+    const Run text = run_argv({"solve", "case.json"}, dir.string());
+    const Run json = run_argv({"solve", "case.json", "--format", "json"}, dir.string());
+    INFO(slurp(dir / "case.json"));
+    REQUIRE(text.status == json.status);
+    CHECK(text.err == json.err);
+    if (text.status != 0) {
+      CHECK(text.status == 1);
+      ++rejected;
+      continue;
+    }
+    ++solved;
+    const bool warned = text.out.find("not finite:") != std::string::npos || text.out.find("rounding:") != std::string::npos;
+    for (const char* bad : {"nan", "inf"}) CHECK((text.out.find(bad) == std::string::npos || warned));
+    const auto doc = nlohmann::json::parse(json.out);  // valid JSON: a non-finite number is null
+    std::size_t json_warnings = 0;
+    for (const auto& r : doc["results"]) json_warnings += r["warnings"].size();
+    std::size_t text_warnings = 0;
+    for (std::size_t p = 0; (p = text.out.find("  WARNING [", p)) != std::string::npos; ++p) ++text_warnings;
+    CHECK(json_warnings == text_warnings);
+  }
+  fs::remove_all(dir);
+  CHECK(solved + rejected == 60);
+  CHECK(solved >= 20);
 }

@@ -76,8 +76,9 @@ TEST_CASE("command-line strategies use the same rules", "[reader]") {
   }
 }
 
-TEST_CASE("JSON pointers are displayed as JSON paths", "[reader]") {
-  CHECK(io::display_path("") == "$");
-  CHECK(io::display_path("/vehicles/0/mass") == "$.vehicles[0].mass");
-  CHECK(io::display_path("/a~1b/c~0d") == "$.a/b.c~d");
+TEST_CASE("paths print keys that are not identifiers quoted and escaped", "[reader]") {
+  CHECK(io::member_path(io::element_path("$.vehicles", 0), "mass") == "$.vehicles[0].mass");
+  CHECK(io::member_path("$", "vehicles/0/mass") == "$[\"vehicles/0/mass\"]");
+  CHECK(io::member_path("$", "0") == "$[\"0\"]");
+  CHECK(io::member_path("$", "a\nb\x1b[31m") == "$[\"a\\nb\\x1B[31m\"]");
 }

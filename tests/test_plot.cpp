@@ -104,3 +104,77 @@ TEST_CASE("without gnuplot: one clear line and a non-zero exit", "[plot]") {
   CHECK(r.out.empty());
   CHECK(r.err.find("gnuplot not found") != std::string::npos);
 }
+
+// Issue 8 reproductions: text from the case or the command line never reaches gnuplot or a shell as code.
+TEST_CASE("a case name is drawn as text, never run by gnuplot", "[plot][hostile]") {
+  auto doc = nlohmann::json::parse(slurp(fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json"));
+  const fs::path dir = kWork / "names";
+  fs::create_directories(dir);
+  const std::vector<std::string> names = {"x `touch pwned1` y", "Fig 8\n!touch pwned2\n#", "a' . system('touch pwned3') . 'b",
+                                          "t\nset print 'pwned4'\nprint 1", "m @x `touch pwned5`"};
+  int plotted = 0;
+  for (const auto& name : names) {
+    doc["name"] = name;
+    std::ofstream(dir / "case.json") << doc.dump();
+    const Run r = run_argv({"plot", "case.json", "-o", "figs"}, dir.string());
+    INFO(name << "\n" << r.err);
+    CHECK(r.status == 0);
+    CHECK(r.err.empty());
+    ++plotted;
+  }
+  CHECK(plotted == 5);
+  for (const char* f : {"pwned1", "pwned2", "pwned3", "pwned4", "pwned5"}) {
+    CHECK(!fs::exists(dir / f));
+    CHECK(!fs::exists(dir / "figs" / f));
+  }
+  // The last name is in the title as written, backquotes and all (gnuplot escapes it for SVG).
+  CHECK(slurp(dir / "figs" / "contact_plane.svg").find("m @x `touch pwned5`") != std::string::npos);
+}
+
+TEST_CASE("the output directory is an argument, never shell text", "[plot][hostile]") {
+  const fs::path dir = kWork / "outdir";
+  fs::create_directories(dir);
+  const std::string odd = "x'; touch pwned; echo '";
+  const Run r = run_argv({"plot", (fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json").string(), "-o", odd}, dir.string());
+  CHECK(r.status == 0);
+  CHECK(fs::exists(dir / odd / "contact_plane.svg"));
+  CHECK(!fs::exists(dir / "pwned"));
+  // "-" is a directory named "-", not the previous working directory.
+  const Run dash = run_argv({"plot", (fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json").string(), "-o", "-"}, dir.string());
+  CHECK(dash.status == 0);
+  CHECK(fs::exists(dir / "-" / "contact_plane.svg"));
+}
+
+TEST_CASE("a link planted in the output directory is replaced, not followed", "[plot][hostile]") {
+  const fs::path dir = kWork / "planted";
+  fs::create_directories(dir / "figs");
+  std::ofstream(dir / "target") << "keep";
+  for (const char* f : {"contact_plane.dat", "contact_plane.svg", "contact_plane.gp"}) fs::create_symlink(dir / "target", dir / "figs" / f);
+  const Run r = run_argv({"plot", (fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json").string(), "-o", "figs"}, dir.string());
+  CHECK(r.status == 0);
+  CHECK(slurp(dir / "target") == "keep");
+  CHECK(!fs::is_symlink(dir / "figs" / "contact_plane.dat"));
+  CHECK(!fs::is_symlink(dir / "figs" / "contact_plane.svg"));
+}
+
+TEST_CASE("a head-on case (no contact-plane impulse) plots every figure without a gnuplot message", "[plot][hostile]") {
+  const fs::path dir = kWork / "head_on";
+  fs::create_directories(dir);
+  std::ofstream(dir / "case.json") << R"({"name": "head-on", "vehicles": [
+    {"mass": 1500, "inertia": {"Ixx": 500, "Iyy": 2000, "Izz": 2200}, "velocity": [10, 0, 0], "impulse_center": [2, 0, 0]},
+    {"mass": 1500, "inertia": {"Ixx": 500, "Iyy": 2000, "Izz": 2200}, "orientation_deg": {"yaw": 180},
+     "velocity": [-10, 0, 0], "impulse_center": [2, 0, 0]}],
+    "contact": {"normal_yaw_deg": 180}, "restitution": 0.1,
+    "strategy": [{"name": "pc-crash", "mu": 0.4}, {"name": "wach", "mu": 0.4}, {"name": "brach", "mu_t": "critical", "mu_z": 0}]})";
+  const Run r = run_argv({"plot", "case.json", "-o", "figs"}, dir.string());
+  INFO(r.err);
+  CHECK(r.status == 0);
+  CHECK(r.err.empty());
+  int figures = 0;
+  for (const auto& e : fs::directory_iterator(dir / "figs"))
+    if (e.path().extension() == ".svg") {
+      ++figures;
+      CHECK(fs::file_size(e.path()) > 1000);
+    }
+  CHECK(figures == 11);  // contact plane, 3 solution planes, impulse space, 2 sweeps x 3 strategies
+}

@@ -1,32 +1,39 @@
 #include "compare.hpp"
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <sstream>
-#include <stdexcept>
+#include <optional>
+#include <string_view>
+#include <system_error>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "impact3d/case/case_spec.hpp"
+#include "impact3d/case/escape.hpp"
+#include "impact3d/case/json_literals.hpp"
+#include "impact3d/case/limits.hpp"
 
 namespace impact3d::cli {
 namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
+using io::CaseError;
 
-json parse(const fs::path& p) {
-  try {
-    return json::parse(io::read_text_file(p.string()));
-  } catch (const json::parse_error& e) {
-    throw std::runtime_error(p.string() + ": invalid JSON");
-  }
-}
+// A CSV cell holds a number or a short string; anything longer is not a result.
+constexpr std::size_t kCellChars = 256;
 
-// The fields the contract requires of a result, as paths below results[i]; and the top-level ones.
+// The fields the contract requires: of the document, and of each result (paths below results[i]).
 const std::vector<std::string> kContractTop = {"coefficients.m_prime", "coefficients.K"};
 const std::vector<std::string> kContractResult = {
     "regime",     "impulse_ratio", "limits", "impulse.contact", "impulse.world", "relative_velocity.before",
@@ -34,30 +41,28 @@ const std::vector<std::string> kContractResult = {
     "vehicles.1.velocity", "vehicles.1.angular_velocity", "vehicles.1.delta_v", "energy.before", "energy.after",
     "energy.loss"};
 
-const json* at_path(const json& root, const std::string& dotted) {
-  const json* node = &root;
-  std::stringstream ss(dotted);
-  for (std::string part; std::getline(ss, part, '.');) {
-    if (node->is_array()) {
-      const auto index = static_cast<std::size_t>(std::stoul(part));
-      if (index >= node->size()) return nullptr;
-      node = &(*node)[index];
-    } else if (node->is_object()) {
-      auto it = node->find(part);
-      if (it == node->end()) return nullptr;
-      node = &*it;
-    } else {
-      return nullptr;
-    }
-  }
-  return node;
-}
+// One scalar of the reference that compare checks. A null (an undefined angle) is kept so that a CSV
+// may name its column, but it is never compared or counted.
+struct Leaf {
+  std::vector<std::string> parts;  // keys, and array indices as decimal text
+  std::string dotted;              // parts joined with '.', as a CSV column names it
+  json value;
+  bool contract;
+};
+
+struct RefCase {
+  std::string name, file;
+  std::vector<Leaf> top;                   // below the document's root
+  std::vector<std::vector<Leaf>> results;  // below results[i]
+  std::size_t fields = 0;                  // leaves that are compared (not null)
+};
 
 struct Field {
   std::string path;
   bool pass;
   double rel = 0;
   std::string detail;
+  bool compared = false;  // the other side gave a value (not a missing field or a whole-case failure)
 };
 
 struct CaseReport {
@@ -65,67 +70,206 @@ struct CaseReport {
   std::vector<Field> fields;
 };
 
+std::string join(const std::vector<std::string>& parts) {
+  std::string s;
+  for (std::size_t i = 0; i < parts.size(); ++i) s.append(i ? "." : "").append(parts[i]);
+  return s;
+}
+
+std::vector<std::string> split_dots(const std::string& s) {
+  std::vector<std::string> out;
+  for (std::size_t start = 0;;) {
+    const auto dot = s.find('.', start);
+    out.push_back(s.substr(start, dot - start));
+    if (dot == std::string::npos) return out;
+    start = dot + 1;
+  }
+}
+
+// Iterative: the nesting of a file is input, never a bound on the stack. Below the top every leaf is
+// the contract's; below a result, those at or below a kContractResult path.
+void collect(const json& root, std::vector<std::string> prefix, bool top, std::vector<Leaf>& out) {
+  struct Item {
+    const json* node;
+    std::vector<std::string> parts;
+  };
+  std::vector<Item> stack;
+  stack.push_back({&root, std::move(prefix)});
+  while (!stack.empty()) {
+    Item item = std::move(stack.back());
+    stack.pop_back();
+    const json& node = *item.node;
+    if (node.is_object() || node.is_array()) {
+      std::vector<Item> children;
+      std::size_t i = 0;
+      for (auto it = node.begin(); it != node.end(); ++it, ++i) {
+        auto parts = item.parts;
+        parts.push_back(node.is_object() ? it.key() : std::to_string(i));
+        children.push_back({&*it, std::move(parts)});
+      }
+      for (auto it = children.rbegin(); it != children.rend(); ++it) stack.push_back(std::move(*it));
+      continue;
+    }
+    Leaf leaf{item.parts, join(item.parts), node, top};
+    for (const auto& c : kContractResult)
+      leaf.contract = leaf.contract || leaf.dotted == c || leaf.dotted.rfind(c + ".", 0) == 0;
+    out.push_back(std::move(leaf));
+  }
+}
+
+// The node at `parts` below `root`, or null; array indices are read from the reference's own text.
+const json* find(const json& root, const std::vector<std::string>& parts) {
+  const json* node = &root;
+  for (const auto& part : parts) {
+    if (node->is_object()) {
+      const auto it = node->find(part);
+      if (it == node->end()) return nullptr;
+      node = &*it;
+    } else if (node->is_array()) {
+      std::size_t i = 0;
+      const char* end = part.data() + part.size();
+      const auto [p, ec] = std::from_chars(part.data(), end, i);
+      if (ec != std::errc() || p != end || i >= node->size()) return nullptr;
+      node = &(*node)[i];
+    } else {
+      return nullptr;
+    }
+  }
+  return node;
+}
+
+json read_json(const std::string& file) {
+  return io::parse_json_bounded(io::read_text_file(file, io::limits::kResultFileBytes), file + ": $");
+}
+
+RefCase load_reference(const std::string& name, const std::string& file) {
+  const json doc = read_json(file);
+  const auto results = doc.is_object() ? doc.find("results") : doc.end();
+  if (!doc.is_object() || results == doc.end())
+    throw CaseError(file + ": $.results", "missing (a reference result is an object with a \"results\" array)");
+  if (!results->is_array()) throw CaseError(file + ": $.results", "not an array");
+  RefCase rc{name, file, {}, {}, 0};
+  for (const auto& path : kContractTop) {
+    auto parts = split_dots(path);
+    if (const json* v = find(doc, parts)) collect(*v, std::move(parts), true, rc.top);
+  }
+  for (std::size_t i = 0; i < results->size(); ++i) {
+    const json& r = (*results)[i];
+    if (!r.is_object()) throw CaseError(file + ": " + io::element_path("$.results", i), "not an object");
+    auto& leaves = rc.results.emplace_back();
+    // The strategy echoes the input and the warnings are prose: neither is a result to compare.
+    for (const auto& [k, v] : r.items())
+      if (k != "strategy" && k != "warnings") collect(v, {k}, false, leaves);
+  }
+  const auto count = [&](const std::vector<Leaf>& v) {
+    for (const auto& l : v) rc.fields += l.value.is_null() ? 0 : 1;
+  };
+  count(rc.top);
+  for (const auto& r : rc.results) count(r);
+  return rc;
+}
+
+// Other people's text in a detail: quoted, and cut short.
+std::string excerpt(std::string_view s) {
+  return s.size() > 60 ? io::quoted(s.substr(0, 60)) + "..." : io::quoted(s);
+}
+
+std::string describe(const json& v) {
+  if (v.is_string()) return excerpt(v.get_ref<const std::string&>());
+  if (v.is_object()) return "an object";
+  if (v.is_array()) return "an array";
+  if (v.is_number()) return fmt::format("{:.17g}", v.get<double>());
+  return v.dump();
+}
+
+bool ends_with(const std::string& s, std::string_view tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
 class Comparer {
  public:
   explicit Comparer(const CompareOptions& o) : o_(o) {}
 
-  // Every leaf of `ref` below `path`; `other` missing a leaf fails when `required`.
-  void leaves(const std::string& path, const json& ref, const json* other, bool required, CaseReport& r) {
-    if (ref.is_object() || ref.is_array()) {
-      if (ref.is_object())
-        for (const auto& [k, v] : ref.items()) leaves(path + "." + k, v, other ? at_path(*other, k) : nullptr, required, r);
-      else
-        for (std::size_t i = 0; i < ref.size(); ++i)
-          leaves(path + "." + std::to_string(i), ref[i], other ? at_path(*other, std::to_string(i)) : nullptr, required, r);
-      return;
-    }
-    const std::string p = path.substr(1);
-    if (!other) {
-      if (required) r.fields.push_back({p, false, 0, "missing"});
-      return;
-    }
-    if (ref.is_number()) {
-      if (!other->is_number()) {
-        r.fields.push_back({p, false, 0, "not a number"});
-        return;
-      }
-      const double a = ref.get<double>(), b = other->get<double>();
-      double d = std::fabs(b - a);
-      // Angles in degrees wrap: 180 and -180 (or 0 and 360) are the same direction.
-      if (p.size() > 4 && p.compare(p.size() - 4, 4, "_deg") == 0) d = std::fabs(std::remainder(b - a, 360.0));
-      // A relative error is reported only where the value stands above the absolute tolerance.
-      const double rel = std::fabs(a) > o_.atol ? d / std::fabs(a) : 0;
-      r.fields.push_back({p, d <= o_.atol + o_.rtol * std::fabs(a), rel,
-                          fmt::format("reference {:.17g}, other {:.17g}", a, b)});
-    } else if (ref.is_string()) {
-      const bool same = other->is_string() && other->get<std::string>() == ref.get<std::string>();
-      r.fields.push_back({p, same, 0, same ? "" : "reference \"" + ref.get<std::string>() + "\", other " + other->dump()});
-    }
+  bool required(const Leaf& l) const { return !o_.subset && (l.contract || o_.all_fields); }
+
+  Field missing(const std::string& path) const { return {path, false, 0, "missing"}; }
+
+  Field number(const std::string& path, const Leaf& l, double b) const {
+    const double a = l.value.get<double>();
+    double d = std::fabs(b - a);
+    // Angles in degrees wrap: 180 and -180 (or 0 and 360) are the same direction.
+    if (!l.parts.empty() && ends_with(l.parts.back(), "_deg")) d = std::fabs(std::remainder(b - a, 360.0));
+    // A relative error is reported only where the value stands above the absolute tolerance.
+    const double rel = std::fabs(a) > o_.atol ? d / std::fabs(a) : 0;
+    return {path, d <= o_.atol + o_.rtol * std::fabs(a), rel, fmt::format("reference {:.17g}, other {:.17g}", a, b), true};
   }
 
-  // `require_contract`: a JSON result must carry every field the contract requires; a CSV names its
-  // own columns, and exactly those are compared.
-  CaseReport compare_json(const std::string& name, const json& ref, const json& other, bool require_contract) {
-    CaseReport r{name, {}};
-    for (const auto& path : kContractTop)
-      if (const json* v = at_path(ref, path)) leaves("." + path, *v, at_path(other, path), require_contract, r);
-    const json& rr = ref.at("results");
-    const json* orr = at_path(other, "results");
-    for (std::size_t i = 0; i < rr.size(); ++i) {
-      const json* o = orr ? at_path(*orr, std::to_string(i)) : nullptr;
-      const std::string base = ".results." + std::to_string(i);
-      for (const auto& path : kContractResult)
-        if (const json* v = at_path(rr[i], path))
-          leaves(base + "." + path, *v, o ? at_path(*o, path) : nullptr, require_contract, r);
-      if (!o) continue;
-      // Beyond the contract: compared where the other tool has them (required with --all).
-      for (const auto& [k, v] : rr[i].items()) {
-        bool contract = false;
-        for (const auto& c : kContractResult) contract = contract || c == k || c.rfind(k + ".", 0) == 0;
-        if (!contract && k != "strategy" && k != "warnings")
-          leaves(base + "." + k, v, at_path(*o, k), require_contract && o_.all_fields, r);
+  Field mismatch(const std::string& path, const Leaf& l, const std::string& other, const char* why) const {
+    return {path, false, 0, fmt::format("reference {}, other {}{}", describe(l.value), other, why), true};
+  }
+
+  Field from_json(const std::string& path, const Leaf& l, const json& other) const {
+    if (l.value.is_number()) {
+      if (!other.is_number()) return mismatch(path, l, describe(other), ": not a number");
+      const double b = other.get<double>();
+      if (!std::isfinite(b)) return mismatch(path, l, describe(other), ": not a finite number");
+      return number(path, l, b);
+    }
+    return {path, other == l.value, 0, other == l.value ? "" : mismatch(path, l, describe(other), "").detail, true};
+  }
+
+  Field from_cell(const std::string& path, const Leaf& l, std::string_view cell) const {
+    if (l.value.is_number()) {
+      const std::string text(cell);  // at most kCellChars
+      char* end = nullptr;
+      const double b = std::strtod(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0') return mismatch(path, l, excerpt(cell), ": not a number");
+      if (!std::isfinite(b)) return mismatch(path, l, excerpt(cell), ": not a finite number");
+      return number(path, l, b);
+    }
+    const std::string want = l.value.is_string() ? l.value.get<std::string>() : l.value.dump();
+    return {path, cell == want, 0, cell == want ? "" : mismatch(path, l, excerpt(cell), "").detail, true};
+  }
+
+  // A result file: every reference leaf looked up in it; shape errors in `other` are failing fields.
+  CaseReport compare_json(const RefCase& rc, const json& other, const std::string& file) const {
+    if (!other.is_object()) throw CaseError(file + ": $", "not an object (a result file is the contract's result JSON)");
+    CaseReport r{rc.name, {}};
+    for (const auto& l : rc.top) {
+      if (l.value.is_null()) continue;
+      if (const json* v = find(other, l.parts)) r.fields.push_back(from_json(l.dotted, l, *v));
+      else if (required(l)) r.fields.push_back(missing(l.dotted));
+    }
+    const auto results = other.find("results");
+    if (results == other.end()) {
+      if (!o_.subset)
+        for (std::size_t i = 0; i < rc.results.size(); ++i) r.fields.push_back(missing(fmt::format("results.{}", i)));
+      return r;
+    }
+    if (!results->is_array()) {
+      r.fields.push_back({"results", false, 0, "not an array (other: " + describe(*results) + ")"});
+      return r;
+    }
+    for (std::size_t i = 0; i < rc.results.size(); ++i) {
+      const std::string base = fmt::format("results.{}", i);
+      if (i >= results->size()) {
+        if (!o_.subset) r.fields.push_back(missing(base));
+        continue;
+      }
+      const json& o = (*results)[i];
+      if (!o.is_object()) {
+        r.fields.push_back({base, false, 0, "not an object (other: " + describe(o) + ")"});
+        continue;
+      }
+      for (const auto& l : rc.results[i]) {
+        if (l.value.is_null()) continue;
+        if (const json* v = find(o, l.parts)) r.fields.push_back(from_json(base + "." + l.dotted, l, *v));
+        else if (required(l)) r.fields.push_back(missing(base + "." + l.dotted));
       }
     }
+    if (results->size() > rc.results.size())
+      r.fields.push_back({"results", false, 0,
+                          fmt::format("{} results, the reference has {}", results->size(), rc.results.size())});
     return r;
   }
 
@@ -133,123 +277,268 @@ class Comparer {
   const CompareOptions& o_;
 };
 
-// CSV: a header naming the columns, then one row per case result. Columns: `case` (the reference file
-// name without .json), `result` (index into results), then JSON paths with dots: below results[result],
-// or from the top when they start with "coefficients.".
-std::map<std::string, json> read_csv(const fs::path& p) {
-  std::map<std::string, json> docs;
-  std::istringstream in(io::read_text_file(p.string()));
-  std::string line;
-  if (!std::getline(in, line)) throw std::runtime_error(p.string() + ": empty CSV");
-  auto split = [](const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream ss(s);
-    for (std::string cell; std::getline(ss, cell, ',');) {
-      while (!cell.empty() && (cell.back() == '\r' || cell.back() == ' ')) cell.pop_back();
-      out.push_back(cell);
-    }
-    return out;
-  };
-  const auto header = split(line);
-  if (header.size() < 3 || header[0] != "case" || header[1] != "result")
-    throw std::runtime_error(p.string() + ": the CSV header must start with case,result");
-  for (int row = 2; std::getline(in, line); ++row) {
-    if (line.empty()) continue;
-    const auto cells = split(line);
-    if (cells.size() != header.size()) throw std::runtime_error(fmt::format("{}: row {} has {} cells, the header {}", p.string(), row, cells.size(), header.size()));
-    json& doc = docs[cells[0]];
-    const std::string result = cells[1];
-    for (std::size_t c = 2; c < header.size(); ++c) {
-      const std::string path = header[c].rfind("coefficients.", 0) == 0 ? header[c] : "results." + result + "." + header[c];
-      json value;
-      try {
-        std::size_t used = 0;
-        const double d = std::stod(cells[c], &used);
-        value = used == cells[c].size() ? json(d) : json(cells[c]);
-      } catch (const std::exception&) {
-        value = cells[c];
-      }
-      doc[json::json_pointer("/" + [&] {
-        std::string s = path;
-        for (auto& ch : s) if (ch == '.') ch = '/';
-        return s;
-      }())] = value;
-    }
-  }
-  return docs;
+// What a CSV gives for one reference case.
+struct CsvCase {
+  bool any = false;
+  std::vector<std::optional<Field>> top;          // by top leaf: the failing or else the first value given
+  std::map<std::size_t, std::vector<Field>> results;
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
 }
+
+// Callers count the commas first: a line of a million commas is refused before it is split.
+std::vector<std::string_view> split_cells(std::string_view line) {
+  std::vector<std::string_view> cells;
+  for (std::size_t start = 0;;) {
+    const auto comma = line.find(',', start);
+    cells.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    if (comma == std::string_view::npos) return cells;
+    start = comma + 1;
+  }
+}
+
+// `result`: a decimal index below `n`, nothing else (no sign, no space, no exponent).
+std::optional<std::size_t> result_index(std::string_view s, std::size_t n) {
+  if (s.empty() || s.size() > 9 || !std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return std::nullopt;
+  std::size_t i = 0;
+  std::from_chars(s.data(), s.data() + s.size(), i);
+  return i < n ? std::optional(i) : std::nullopt;
+}
+
+// Each row stays a flat map from the header's dotted paths to its cells; the reference's leaves are
+// looked up in it. No document is built from a column's path, so no path can size an allocation.
+std::vector<CsvCase> read_csv(const std::string& file, const std::vector<RefCase>& refs, const Comparer& cmp) {
+  const std::string text = io::read_text_file(file, io::limits::kResultFileBytes);
+  std::string_view rest = text;
+  if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);  // a spreadsheet's byte-order mark
+  int row = 0;
+  const auto next_line = [&]() -> std::optional<std::string_view> {
+    if (rest.empty()) return std::nullopt;
+    const auto nl = rest.find('\n');
+    const std::string_view line = rest.substr(0, nl);
+    rest.remove_prefix(nl == std::string_view::npos ? rest.size() : nl + 1);
+    ++row;
+    return line;
+  };
+  const auto header_line = next_line();
+  if (!header_line) throw CaseError(file, "empty CSV");
+  if (static_cast<std::size_t>(std::count(header_line->begin(), header_line->end(), ',')) >= io::limits::kCsvColumns)
+    throw CaseError(file, fmt::format("more than {} columns", io::limits::kCsvColumns));
+  std::vector<std::string> header;
+  for (const auto cell : split_cells(*header_line)) {
+    if (cell.size() > kCellChars)
+      throw CaseError(file, fmt::format("row 1, column {}: a name longer than {} characters", header.size() + 1, kCellChars));
+    header.emplace_back(cell);
+  }
+  if (header.size() < 3 || header[0] != "case" || header[1] != "result")
+    throw CaseError(file, "the CSV header must start with case,result and name at least one field");
+
+  // Every column must name a field compare checks somewhere in the reference: a misspelt one never passes.
+  std::unordered_set<std::string> known;
+  for (const auto& rc : refs) {
+    for (const auto& l : rc.top) known.insert(l.dotted);
+    for (const auto& r : rc.results)
+      for (const auto& l : r) known.insert(l.dotted);
+  }
+  std::unordered_map<std::string, std::size_t> column;
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    if (!column.emplace(header[c], c).second) throw CaseError(file, fmt::format("column {} appears twice", io::quoted(header[c])));
+    if (c >= 2 && !known.count(header[c]))
+      throw CaseError(file, fmt::format("column {} is not a field of the reference that compare checks", io::quoted(header[c])));
+  }
+
+  std::unordered_map<std::string, std::size_t> case_of;
+  for (std::size_t k = 0; k < refs.size(); ++k) case_of.emplace(refs[k].name, k);
+  std::vector<CsvCase> out(refs.size());
+  for (std::size_t k = 0; k < refs.size(); ++k) out[k].top.resize(refs[k].top.size());
+  std::map<std::pair<std::size_t, std::size_t>, int> first_row;
+  std::vector<char> used(header.size());
+  while (const auto line = next_line()) {
+    if (trim(*line).empty()) continue;
+    const auto commas = static_cast<std::size_t>(std::count(line->begin(), line->end(), ','));
+    if (commas + 1 != header.size())
+      throw CaseError(file, fmt::format("row {} has {} cells, the header {}", row, commas + 1, header.size()));
+    const auto cells = split_cells(*line);
+    const auto where = [&](std::size_t c) {
+      return fmt::format("row {}, column {}", row, c < 2 ? header[c] : io::quoted(header[c]));
+    };
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      if (cells[c].size() > kCellChars)
+        throw CaseError(file, fmt::format("{}: a cell longer than {} characters", where(c), kCellChars));
+    const auto k = case_of.find(std::string(cells[0]));
+    if (k == case_of.end())
+      throw CaseError(file, fmt::format("{}: {} is not a case of the reference", where(0), io::quoted(cells[0])));
+    const RefCase& rc = refs[k->second];
+    const auto i = result_index(cells[1], rc.results.size());
+    if (!i) {
+      if (rc.results.empty())
+        throw CaseError(file, fmt::format("{}: the reference case {} has no results", where(1), io::quoted(rc.name)));
+      throw CaseError(file, fmt::format("{}: expected a result index from 0 to {}, got {}", where(1), rc.results.size() - 1,
+                                        io::quoted(cells[1])));
+    }
+    if (const auto [it, fresh] = first_row.emplace(std::pair(k->second, *i), row); !fresh)
+      throw CaseError(file, fmt::format("row {}: case {} result {} is also in row {}", row, io::quoted(rc.name), *i, it->second));
+
+    CsvCase& cc = out[k->second];
+    cc.any = true;
+    std::fill(used.begin(), used.end(), 0);
+    used[0] = used[1] = 1;
+    // The cell of a leaf, marking its column as one this row may fill; empty means not given.
+    const auto cell_of = [&](const Leaf& l) -> std::optional<std::string_view> {
+      const auto c = column.find(l.dotted);
+      if (c == column.end()) return std::nullopt;
+      used[c->second] = 1;
+      if (cells[c->second].empty()) return std::nullopt;
+      return cells[c->second];
+    };
+    for (std::size_t t = 0; t < rc.top.size(); ++t) {
+      const Leaf& l = rc.top[t];
+      const auto cell = cell_of(l);
+      if (!cell || l.value.is_null()) continue;
+      Field f = cmp.from_cell(l.dotted, l, *cell);
+      if (!f.pass) f.detail += fmt::format(" (row {})", row);
+      if (!cc.top[t] || (cc.top[t]->pass && !f.pass)) cc.top[t] = std::move(f);
+    }
+    auto& fields = cc.results[*i];
+    const std::string base = fmt::format("results.{}.", *i);
+    for (const Leaf& l : rc.results[*i]) {
+      const auto cell = cell_of(l);
+      if (l.value.is_null()) continue;
+      if (cell) fields.push_back(cmp.from_cell(base + l.dotted, l, *cell));
+      else if (cmp.required(l)) fields.push_back(cmp.missing(base + l.dotted));
+    }
+    for (std::size_t c = 2; c < cells.size(); ++c)
+      if (!used[c] && !cells[c].empty())
+        throw CaseError(file, fmt::format("{}: result {} of {} has no such field in the reference (leave the cell empty)",
+                                          where(c), *i, io::quoted(rc.name)));
+  }
+  return out;
+}
+
+// A failure of the whole case, listed like a field: "case missing", "nothing compared".
+Field whole_case(const std::string& what, const std::string& detail) { return {what, false, 0, detail}; }
 
 }  // namespace
 
 int compare(const std::string& reference, const std::string& other, const CompareOptions& o) {
-  std::vector<std::pair<std::string, fs::path>> refs;
-  if (fs::is_directory(reference)) {
-    for (const auto& e : fs::directory_iterator(reference))
-      if (e.path().extension() == ".json") refs.push_back({e.path().stem().string(), e.path()});
+  std::error_code ec;
+  std::vector<RefCase> refs;
+  const bool reference_dir = fs::is_directory(reference, ec);
+  if (reference_dir) {
+    std::vector<std::pair<std::string, std::string>> files;
+    fs::directory_iterator it(reference, ec);
+    for (; !ec && it != fs::directory_iterator(); it.increment(ec))
+      if (it->path().extension() == ".json") files.push_back({it->path().stem().string(), it->path().string()});
+    if (ec) throw CaseError(reference, "cannot list the directory (" + ec.message() + ")");
+    if (files.empty()) throw CaseError(reference, "no reference results (*.json) in this directory");
+    std::sort(files.begin(), files.end());
+    for (const auto& [name, file] : files) refs.push_back(load_reference(name, file));
   } else {
-    refs.push_back({fs::path(reference).stem().string(), reference});
+    refs.push_back(load_reference(fs::path(reference).stem().string(), reference));
   }
-  std::sort(refs.begin(), refs.end());
-  std::map<std::string, json> csv;
-  const bool is_csv = fs::path(other).extension() == ".csv";
-  if (is_csv) csv = read_csv(other);
 
-  Comparer cmp(o);
-  std::vector<CaseReport> reports;
-  for (const auto& [name, path] : refs) {
-    json other_doc;
-    if (is_csv) {
-      auto it = csv.find(name);
-      if (it == csv.end()) continue;  // a CSV may cover only some cases; those are listed as not compared
-      other_doc = it->second;
-    } else if (fs::is_directory(other)) {
-      const fs::path op = fs::path(other) / (name + ".json");
-      if (!fs::exists(op)) {
-        reports.push_back({name, {{"(file)", false, 0, op.string() + " missing"}}});
+  const Comparer cmp(o);
+  // By reference case; empty where --subset leaves out a case the other side does not have.
+  std::vector<std::optional<CaseReport>> reports(refs.size());
+  const auto absent = [&](std::size_t k, const std::string& detail) {
+    if (!o.subset) reports[k] = CaseReport{refs[k].name, {whole_case("case missing", detail)}};
+  };
+  if (fs::path(other).extension() == ".csv") {
+    const auto csv = read_csv(other, refs, cmp);
+    for (std::size_t k = 0; k < refs.size(); ++k) {
+      const RefCase& rc = refs[k];
+      if (!csv[k].any) {
+        absent(k, "no row in " + other);
         continue;
       }
-      other_doc = parse(op);
-    } else {
-      other_doc = parse(other);
+      CaseReport r{rc.name, {}};
+      for (std::size_t t = 0; t < rc.top.size(); ++t) {
+        if (csv[k].top[t]) r.fields.push_back(*csv[k].top[t]);
+        else if (!rc.top[t].value.is_null() && cmp.required(rc.top[t])) r.fields.push_back(cmp.missing(rc.top[t].dotted));
+      }
+      for (std::size_t i = 0; i < rc.results.size(); ++i) {
+        const auto it = csv[k].results.find(i);
+        if (it != csv[k].results.end()) r.fields.insert(r.fields.end(), it->second.begin(), it->second.end());
+        else if (!o.subset) r.fields.push_back({fmt::format("results.{}", i), false, 0, "missing (no row)"});
+      }
+      reports[k] = std::move(r);
     }
-    reports.push_back(cmp.compare_json(name, parse(path), other_doc, !is_csv));
+  } else if (fs::is_directory(other, ec)) {
+    for (std::size_t k = 0; k < refs.size(); ++k) {
+      const std::string file = (fs::path(other) / (refs[k].name + ".json")).string();
+      if (!fs::exists(file, ec)) absent(k, "no file " + file);
+      else reports[k] = cmp.compare_json(refs[k], read_json(file), file);
+    }
+  } else if (!reference_dir) {
+    reports[0] = cmp.compare_json(refs[0], read_json(other), other);
+  } else {
+    // One result file against a directory: the case is the one the file is named after.
+    const std::string name = fs::path(other).stem().string();
+    const auto it = std::find_if(refs.begin(), refs.end(), [&](const RefCase& rc) { return rc.name == name; });
+    if (it == refs.end())
+      throw CaseError(other, fmt::format("no case of the reference is named {} (a result file is named like its case)",
+                                         io::quoted(name)));
+    const json doc = read_json(other);
+    for (std::size_t k = 0; k < refs.size(); ++k) {
+      if (&refs[k] == &*it) reports[k] = cmp.compare_json(refs[k], doc, other);
+      else absent(k, "not in " + other);
+    }
   }
-  if (reports.empty()) throw std::runtime_error("no case of the reference was found in " + other);
 
-  int failed_cases = 0;
+  std::size_t reference_fields = 0, compared = 0, cases = 0, failed_cases = 0;
   double worst = 0;
-  std::string worst_where;
-  std::string table = fmt::format("{:<40} {:>7} {:>7}  {:>12}  {}\n", "case", "fields", "failed", "worst rel", "worst field");
+  std::string worst_where = "-";
+  // Every line passes through printable(): case names, paths and values come from other people's files.
+  const auto line = [](const std::string& s) { return io::printable(s) + "\n"; };
+  std::string table = line(fmt::format("{:<40} {:>7} {:>7}  {:>12}  {}", "case", "fields", "failed", "worst rel", "worst field"));
   std::string failures;
-  for (const auto& r : reports) {
+  for (std::size_t k = 0; k < refs.size(); ++k) {
+    reference_fields += refs[k].fields;
+    if (!reports[k]) continue;
+    CaseReport& r = *reports[k];
+    ++cases;
+    const auto n = static_cast<std::size_t>(std::count_if(r.fields.begin(), r.fields.end(), [](const Field& f) { return f.compared; }));
+    compared += n;
+    const bool whole = !r.fields.empty() && !r.fields.front().compared && r.fields.front().path == "case missing";
+    if (n == 0 && !whole) r.fields.insert(r.fields.begin(), whole_case("nothing compared", "no field of the reference in the other results"));
     int failed = 0;
-    double w = 0;
-    std::string wf = "-";
+    const Field* named = nullptr;  // the failure with the largest relative error, else the first failure
+    const Field* largest = nullptr;
     for (const auto& f : r.fields) {
       if (!f.pass) {
         ++failed;
-        failures += fmt::format("  FAIL {}: {}: {}\n", r.name, f.path, f.detail);
+        failures += line(fmt::format("  FAIL {}: {}: {}", r.name, f.path, f.detail));
+        if (!named || (f.rel > named->rel)) named = &f;
       }
-      if (f.rel > w) {
-        w = f.rel;
-        wf = f.path;
+      if (f.compared && (!largest || f.rel > largest->rel)) largest = &f;
+      if (f.compared && f.rel > worst) {
+        worst = f.rel;
+        worst_where = r.name + ": " + f.path;
       }
     }
     if (failed) ++failed_cases;
-    if (w > worst) {
-      worst = w;
-      worst_where = r.name + ": " + wf;
+    // A failure with no relative error (a string, a missing field, a value near zero) shows its detail.
+    std::string rel = fmt::format("{:.3e}", largest ? largest->rel : 0.0), field = largest && largest->rel > 0 ? largest->path : "-";
+    if (named) {
+      rel = named->rel > 0 ? fmt::format("{:.3e}", named->rel) : "-";
+      field = named->rel > 0 ? named->path : named->path + ": " + named->detail;
     }
-    table += fmt::format("{:<40} {:>7} {:>7}  {:>12.3e}  {}\n", r.name, r.fields.size(), failed, w, wf);
+    table += line(fmt::format("{:<40} {:>7} {:>7}  {:>12}  {}", r.name, n, failed, rel, field));
   }
-  std::fputs(table.c_str(), stdout);
-  if (!failures.empty()) std::fputs(("\n" + failures).c_str(), stdout);
-  std::fputs(fmt::format("\n{} of {} cases pass (rtol {:g}, atol {:g}); worst relative error {:.3e} at {}\n",
-                         reports.size() - failed_cases, reports.size(), o.rtol, o.atol, worst,
-                         worst_where.empty() ? "-" : worst_where)
-                 .c_str(),
-             stdout);
-  return failed_cases ? 1 : 0;
+  std::string out = table;
+  if (!failures.empty()) out.append("\n").append(failures);
+  if (compared == 0) out.append("\n").append(line(fmt::format("nothing was compared: {} gives no field of the reference", other)));
+  std::string summary = fmt::format("{} of {} cases pass (rtol {:g}, atol {:g}); worst relative error {:.3e} at {}",
+                                    cases - failed_cases, cases, o.rtol, o.atol, worst, worst_where);
+  if (o.subset) summary += fmt::format("; subset: {} of {} reference fields compared", compared, reference_fields);
+  out.append("\n").append(line(summary));
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  return failed_cases || compared == 0 ? 1 : 0;
 }
 
 }  // namespace impact3d::cli

@@ -9,10 +9,12 @@ struct CompareOptions {
   double rtol = 1e-9;
   double atol = 1e-9;
   bool all_fields = false;  // also require the reference's keys beyond the contract
+  bool subset = false;      // compare only what the other side has, and say so: never a silent partial pass
 };
 
-// Prints the table to stdout; returns 0 when every compared field passes, 1 otherwise. Throws
-// std::runtime_error (one line) on unreadable input.
+// Prints the table to stdout; returns 0 when every reference field in scope was compared and passes,
+// 1 otherwise (a comparison of nothing fails). Throws io::CaseError naming the file on bad input, before
+// anything is printed.
 int compare(const std::string& reference, const std::string& other, const CompareOptions& o);
 
 }  // namespace impact3d::cli

@@ -1,134 +1,156 @@
 #include "impact3d/case/json_literals.hpp"
 
+#include <cctype>
 #include <set>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "impact3d/case/case_spec.hpp"
+#include "impact3d/case/decimal.hpp"
+#include "impact3d/case/escape.hpp"
+#include "impact3d/case/limits.hpp"
 
 namespace impact3d::io {
 namespace {
 
 using json = nlohmann::json;
 
-std::string escape_token(const std::string& key) {
-  std::string out;
-  for (char c : key) {
-    if (c == '~') out += "~0";
-    else if (c == '/') out += "~1";
-    else out += c;
-  }
-  return out;
-}
-
 std::string strip_exception_prefix(const std::string& what) {
   const auto close = what.find("] ");
   return close == std::string::npos ? what : what.substr(close + 2);
 }
 
-// Walks the same text as json::parse and records where each number stands and how it was written.
+bool identifier(std::string_view key) {
+  if (key.empty() || !(std::isalpha(static_cast<unsigned char>(key[0])) || key[0] == '_')) return false;
+  for (char c : key)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  return true;
+}
+
+// Walks the same text as json::parse, enforcing the limits and recording where each number stands and
+// how it was written. The current container's path is kept in one string that grows and shrinks with
+// the nesting, so the cost stays linear in the input.
 class LiteralCollector : public nlohmann::json_sax<json> {
  public:
+  LiteralCollector(const std::string& root, bool keep) : root_(root), keep_(keep), path_(root) {}
+
   std::map<std::string, std::string> literal;
 
-  bool null() override { return value(); }
-  bool boolean(bool) override { return value(); }
+  bool null() override { return scalar(); }
+  bool boolean(bool) override { return scalar(); }
   bool number_integer(number_integer_t v) override { return number(std::to_string(v)); }
   bool number_unsigned(number_unsigned_t v) override { return number(std::to_string(v)); }
   bool number_float(number_float_t, const string_t& s) override { return number(s); }
-  bool string(string_t&) override { return value(); }
-  bool binary(binary_t&) override { return value(); }
-  bool start_object(std::size_t) override {
-    value();
-    frames_.push_back({true, -1, "", {}});
-    return true;
-  }
+  bool string(string_t&) override { return scalar(); }
+  bool binary(binary_t&) override { return scalar(); }
+  bool start_object(std::size_t) override { return open(true); }
+  bool start_array(std::size_t) override { return open(false); }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
   bool key(string_t& k) override {
     auto& f = frames_.back();
+    if (k.size() > limits::kKeyChars)
+      throw CaseError(path_, fmt::format("a key longer than {} characters ({}...)", limits::kKeyChars,
+                                         io::quoted(std::string_view(k).substr(0, 20))));
     f.key = k;
-    if (!f.keys.insert(k).second) throw CaseError(display_path(location()), "duplicate key");
-    return true;
-  }
-  bool end_object() override {
-    frames_.pop_back();
-    return true;
-  }
-  bool start_array(std::size_t) override {
-    value();
-    frames_.push_back({false, -1, "", {}});
-    return true;
-  }
-  bool end_array() override {
-    frames_.pop_back();
+    if (!f.keys.insert(k).second) throw CaseError(member_path(path_, k), "duplicate key");
     return true;
   }
   bool parse_error(std::size_t, const std::string& token, const nlohmann::detail::exception& e) override {
     // 406: a number literal beyond the range of double, e.g. 1e400.
-    if (e.id == 406) throw CaseError(display_path(location()), "not a finite number (" + token + ")");
-    throw CaseError(display_path(location()), "invalid JSON: " + strip_exception_prefix(e.what()));
+    if (e.id == 406) throw CaseError(child(), "not a finite number (" + printable(token) + ")");
+    throw CaseError(child(), "invalid JSON: " + printable(strip_exception_prefix(e.what())));
   }
 
  private:
   struct Frame {
     bool object;
-    long index;
-    std::string key;
+    bool ignored;            // below a key starting with '_'
+    std::size_t index = 0;   // arrays: the index of the next element
+    std::size_t path_length;  // path_ without this container
+    std::string key;         // objects: the key being read
     std::set<std::string> keys;
   };
+  std::string root_;
+  bool keep_;
   std::vector<Frame> frames_;
-  std::string current_;
+  std::string path_;  // the innermost open container (the root's name outside every container)
+  std::size_t values_ = 0;
 
-  bool value() {
+  std::string child() const {
+    if (frames_.empty()) return root_;
+    const Frame& f = frames_.back();
+    return f.object ? member_path(path_, f.key) : element_path(path_, f.index);
+  }
+  bool ignored() const {
+    if (frames_.empty()) return false;
+    const Frame& f = frames_.back();
+    return f.ignored || (f.object && !f.key.empty() && f.key[0] == '_');
+  }
+  void count() {
+    if (++values_ > limits::kValues)
+      throw CaseError(child(), fmt::format("more than {} values in one document", limits::kValues));
+  }
+  bool scalar() {
+    count();
+    return advance();
+  }
+  bool advance() {
     if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
-    current_ = path();
     return true;
   }
   bool number(const std::string& text) {
-    value();
-    literal[current_] = text;
+    count();
+    if (text.size() > limits::kLiteralChars)
+      throw CaseError(child(), fmt::format("a number literal longer than {} characters", limits::kLiteralChars));
+    const long e = written_exponent(text);
+    if (e > limits::kExponent || e < -limits::kExponent)
+      throw CaseError(child(), fmt::format("the exponent of {} is beyond +-{}", printable(text.substr(0, 40)), limits::kExponent));
+    if (keep_ && !ignored()) literal[child()] = text;
+    return advance();
+  }
+  bool open(bool object) {
+    count();
+    if (frames_.size() >= static_cast<std::size_t>(limits::kDepth))
+      throw CaseError(child(), fmt::format("nested deeper than {} levels", limits::kDepth));
+    const bool skip = ignored();
+    const std::size_t length = path_.size();
+    path_ = child();
+    frames_.push_back({object, skip, 0, length, "", {}});
     return true;
   }
-  std::string path() const {
-    std::string p;
-    for (const auto& f : frames_) p += "/" + (f.object ? escape_token(f.key) : std::to_string(f.index));
-    return p;
-  }
-  // Where the value being read stands: the last key of the innermost object, or the next array index.
-  std::string location() const {
-    std::string p;
-    for (std::size_t i = 0; i < frames_.size(); ++i) {
-      const auto& f = frames_[i];
-      const long index = i + 1 == frames_.size() ? f.index + 1 : f.index;
-      p += "/" + (f.object ? escape_token(f.key) : std::to_string(index));
-    }
-    return p;
+  bool close() {
+    path_.resize(frames_.back().path_length);
+    frames_.pop_back();
+    return advance();
   }
 };
 
+ParsedJson parse(std::string_view text, const std::string& root, bool keep) {
+  if (const auto nul = text.find('\0'); nul != std::string_view::npos)
+    throw CaseError(root, fmt::format("invalid JSON: a NUL byte at offset {}", nul));
+  // The collector reads first: it enforces the limits and reports errors with the path where they stand.
+  ParsedJson out;
+  LiteralCollector collector(root, keep);
+  json::sax_parse(text.begin(), text.end(), &collector);
+  out.literal = std::move(collector.literal);
+  out.doc = json::parse(text.begin(), text.end());
+  return out;
+}
+
 }  // namespace
 
-std::string display_path(const std::string& pointer) {
-  std::string out = "$";
-  std::size_t pos = 0;
-  while (pos < pointer.size()) {
-    const std::size_t next = pointer.find('/', pos + 1);
-    std::string token = pointer.substr(pos + 1, next == std::string::npos ? std::string::npos : next - pos - 1);
-    for (std::size_t i; (i = token.find("~1")) != std::string::npos;) token.replace(i, 2, "/");
-    for (std::size_t i; (i = token.find("~0")) != std::string::npos;) token.replace(i, 2, "~");
-    const bool index = !token.empty() && token.find_first_not_of("0123456789") == std::string::npos;
-    out += index ? "[" + token + "]" : "." + token;
-    pos = next == std::string::npos ? pointer.size() : next;
-  }
-  return out;
+std::string member_path(const std::string& parent, std::string_view key) {
+  return identifier(key) ? parent + "." + std::string(key) : parent + "[" + io::quoted(key) + "]";
 }
 
-ParsedJson parse_json_with_literals(const std::string& text) {
-  // The collector reads first: it reports syntax errors with the path where they stand.
-  ParsedJson out;
-  LiteralCollector collector;
-  json::sax_parse(text, &collector);
-  out.literal = std::move(collector.literal);
-  out.doc = json::parse(text);
-  return out;
+std::string element_path(const std::string& parent, std::size_t index) {
+  return parent + "[" + std::to_string(index) + "]";
 }
+
+ParsedJson parse_json_with_literals(std::string_view text, const std::string& root) { return parse(text, root, true); }
+
+nlohmann::json parse_json_bounded(std::string_view text, const std::string& root) { return parse(text, root, false).doc; }
 
 }  // namespace impact3d::io

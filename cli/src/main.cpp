@@ -1,59 +1,77 @@
 // impact3d: solve a two-vehicle 3D collision case by the strategies of Marine's paper.
+#include <algorithm>
 #include <cstdio>
-#include <iostream>
 
 #include <CLI/CLI.hpp>
 
+#include "impact3d/case/escape.hpp"
 #include "impact3d/case/read_case.hpp"
 #include "compare.hpp"
 #include "plot.hpp"
 #include "render.hpp"
+#include "user_error.hpp"
 #include "impact3d/verification/verify.hpp"
 
 namespace {
 
-// Bad input exits 1, internal failures 3; CLI11 uses its own codes (106 and up) for usage errors.
+// One policy for every subcommand: 0 done, 1 bad input (one line naming the file and the JSON path, or
+// a strategy with no solution), 2 command-line usage, 3 internal error. Every error is one line on
+// stderr with the user's text escaped, and nothing on stdout.
 constexpr int kBadInput = 1;
+constexpr int kUsage = 2;
 constexpr int kInternal = 3;
 
-// One line for an error of `verify` or `compare`: a case error names its file and field.
-int report(const std::exception& e) {
-  if (const auto* c = dynamic_cast<const impact3d::io::CaseError*>(&e))
-    std::fprintf(stderr, "impact3d: error: %s\n", c->line().c_str());
-  else
-    std::fprintf(stderr, "impact3d: error: %s\n", e.what());
-  return kBadInput;
+int error_line(const std::string& text, int status) {
+  std::fprintf(stderr, "impact3d: error: %s\n", impact3d::io::printable(text).c_str());
+  return status;
 }
 
+// `file`: the input the error is about, named first unless the error names it already.
+template <typename F>
+int guarded(const std::string& file, F&& body) {
+  using namespace impact3d;
+  const auto in_file = [&](const std::string& line) {
+    return file.empty() || line.rfind(file + ":", 0) == 0 ? line : file + ": " + line;
+  };
+  try {
+    return body();
+  } catch (const io::CaseError& e) {
+    return error_line(in_file(e.line()), kBadInput);
+  } catch (const SolveError& e) {
+    return error_line(in_file(std::string("no solution: ") + e.what()), kBadInput);
+  } catch (const cli::UserError& e) {
+    return error_line(e.what(), kBadInput);
+  } catch (const std::exception& e) {
+    return error_line(in_file(e.what()), kInternal);
+  }
+}
+
+// The strategies of the case or the command line; a strategy with no solution is named by its path.
 int solve(const std::string& case_path, const std::vector<std::string>& strategies, const std::string& precision,
           const impact3d::cli::RenderOptions& options) {
   using namespace impact3d;
-  std::string output;
-  try {
+  return guarded(case_path, [&] {
     io::CaseSpec spec = io::read_case(io::read_text_file(case_path));
     if (!strategies.empty()) {
       spec.strategies.clear();
       for (std::size_t i = 0; i < strategies.size(); ++i)
         spec.strategies.push_back(io::read_strategy_option(strategies[i], static_cast<int>(i)));
     }
-    if (precision == "double") output = cli::render_double(spec, options);
-    else if (precision == "long-double") output = cli::render_long_double(spec, options);
-    else if (precision == "float128") output = cli::render_float128(spec, options);
-    else if (precision == "50") output = cli::render_float50(spec, options);
-    else if (precision == "100") output = cli::render_float100(spec, options);
-    else output = cli::render_exact(spec, options);
-  } catch (const io::CaseError& e) {
-    std::fprintf(stderr, "impact3d: error: %s: %s\n", case_path.c_str(), e.line().c_str());
-    return kBadInput;
-  } catch (const SolveError& e) {
-    std::fprintf(stderr, "impact3d: error: %s: no solution: %s\n", case_path.c_str(), e.what());
-    return kBadInput;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "impact3d: error: %s: %s\n", case_path.c_str(), e.what());
-    return kInternal;
-  }
-  std::fwrite(output.data(), 1, output.size(), stdout);
-  return 0;
+    std::string output;
+    try {
+      if (precision == "double") output = cli::render_double(spec, options);
+      else if (precision == "long-double") output = cli::render_long_double(spec, options);
+      else if (precision == "float128") output = cli::render_float128(spec, options);
+      else if (precision == "50") output = cli::render_float50(spec, options);
+      else if (precision == "100") output = cli::render_float100(spec, options);
+      else output = cli::render_exact(spec, options);
+    } catch (const SolveError& e) {
+      const std::string where = e.strategy && *e.strategy < spec.strategies.size() ? spec.strategies[*e.strategy].path : "$";
+      throw io::CaseError(where, std::string("no solution: ") + e.what());
+    }
+    std::fwrite(output.data(), 1, output.size(), stdout);
+    return 0;
+  });
 }
 
 }  // namespace
@@ -90,6 +108,7 @@ int main(int argc, char** argv) {
   compare_cmd->add_option("--rtol", copt.rtol, "relative tolerance (default 1e-9)");
   compare_cmd->add_option("--atol", copt.atol, "absolute tolerance in the case's units (default 1e-9)");
   compare_cmd->add_flag("--all", copt.all_fields, "also require the reference's fields beyond the contract");
+  compare_cmd->add_flag("--subset", copt.subset, "compare only what the other results contain (cases, results, fields); reported as a subset");
   auto* verify_cmd = app.add_subcommand("verify", "every engine at every precision against the 100-digit solve");
   impact3d::verification::VerifyOptions vopt;
   verify_cmd->add_option("inputs", vopt.inputs, "case files or directories (e.g. examples verification/cases)");
@@ -101,34 +120,27 @@ int main(int argc, char** argv) {
   plot_cmd->add_option("case", plot_case, "case file (JSON)")->required();
   plot_cmd->add_option("-o,--output", popt.out_dir, "directory for the figures, their scripts and data")->required();
   plot_cmd->add_flag("--png", popt.png, "PNG instead of SVG");
-  CLI11_PARSE(app, argc, argv);
-  if (plot_cmd->parsed()) {
-    try {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    std::replace(what.begin(), what.end(), '\n', ' ');
+    std::fprintf(stderr, "impact3d: usage: %s (impact3d --help)\n", impact3d::io::printable(what).c_str());
+    return kUsage;
+  }
+  if (plot_cmd->parsed())
+    return guarded(plot_case, [&] {
       const auto spec = impact3d::io::read_case(impact3d::io::read_text_file(plot_case));
-      std::fputs(impact3d::cli::plot(spec, popt).c_str(), stdout);
+      const std::string written = impact3d::cli::plot(spec, popt);
+      std::fputs(written.c_str(), stdout);
       return 0;
-    } catch (const impact3d::io::CaseError& e) {
-      std::fprintf(stderr, "impact3d: error: %s: %s\n", plot_case.c_str(), e.line().c_str());
-      return kBadInput;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "impact3d: error: %s: %s\n", plot_case.c_str(), e.what());
-      return kBadInput;
-    }
-  }
-  if (verify_cmd->parsed()) {
-    try {
-      return impact3d::verification::verify(vopt);
-    } catch (const std::exception& e) {
-      return report(e);
-    }
-  }
-  if (compare_cmd->parsed()) {
-    try {
-      return impact3d::cli::compare(reference, other, copt);
-    } catch (const std::exception& e) {
-      return report(e);
-    }
-  }
+    });
+  if (verify_cmd->parsed()) return guarded("", [&] { return impact3d::verification::verify(vopt); });
+  if (compare_cmd->parsed()) return guarded("", [&] { return impact3d::cli::compare(reference, other, copt); });
   if (digits == 0 && precision == "double") digits = 10;
   return solve(case_path, strategies, precision,
                {format, digits, engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated});

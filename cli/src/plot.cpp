@@ -1,74 +1,60 @@
 #include "plot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "gnuplot.hpp"
+#include "impact3d/case/escape.hpp"
 #include "impact3d/case/read_case.hpp"
 
 namespace impact3d::cli {
 namespace {
 
-namespace fs = std::filesystem;
 using V3 = Vec3<double>;
 
 struct Context {
   const io::CaseSpec& spec;
   const PlotOptions& o;
+  const OutputDir& dir;
   const Scene<double>& scene;  // SI
   const Analysis<double>& a;
   Problem<double> p;
   UnitFactors<double> f;
   std::string imp_unit, vel_unit, energy_unit;
-  std::string written;
+  std::string written, warnings;
 };
 
-std::string esc(const std::string& s) {  // a gnuplot double-quoted string
-  std::string out;
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out;
+// The image goes to gnuplot's standard output, which run_gnuplot points at a file it created itself.
+std::string terminal(const Context& c, int w = 800, int h = 600) {
+  return fmt::format("set terminal {} size {},{}\n", c.o.png ? "png" : "svg enhanced", w, h);
 }
 
-void write_file(const fs::path& p, const std::string& text) {
-  std::ofstream out(p, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + p.string());
+void draw(Context& c, const std::string& name, const std::string& script) {
+  c.dir.write(name + ".gp", script);
+  const std::string image = name + (c.o.png ? ".png" : ".svg");
+  const std::string messages = run_gnuplot(c.dir, name + ".gp", image);
+  if (!messages.empty()) c.warnings += fmt::format("impact3d: warning: gnuplot on {}.gp: {}\n", name, messages);
+  c.written += image + "\n";
 }
 
-std::string terminal(const Context& c, const std::string& name, int w = 800, int h = 600) {
-  const std::string ext = c.o.png ? "png" : "svg";
-  return fmt::format("set terminal {} size {},{}\nset output \"{}.{}\"\n", c.o.png ? "png" : "svg enhanced", w, h, name, ext);
-}
-
-void run_gnuplot(Context& c, const std::string& name, const std::string& script) {
-  const fs::path dir = c.o.out_dir;
-  write_file(dir / (name + ".gp"), script);
-  const std::string cmd = fmt::format("cd '{}' && gnuplot '{}.gp' 2>&1", dir.string(), name);
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) throw std::runtime_error("cannot run gnuplot");
-  std::string output;
-  char buf[512];
-  while (fgets(buf, sizeof buf, pipe)) output += buf;
-  const int status = pclose(pipe);
-  if (status != 0) throw std::runtime_error("gnuplot failed on " + name + ".gp: " + output.substr(0, 300));
-  c.written += name + (c.o.png ? ".png" : ".svg") + "\n";
+// A range [lo, hi] widened where it is empty, so that gnuplot draws a degenerate figure (a head-on
+// collision has no contact-plane impulse) instead of refusing it.
+std::pair<double, double> nonempty(double lo, double hi, double scale) {
+  if (hi - lo > 1e-9 * std::max({std::fabs(lo), std::fabs(hi), scale})) return {lo, hi};
+  const double half = scale > 0 ? 0.5 * scale : std::max(1.0, 0.5 * std::fabs(lo));
+  return {lo - half, hi + half};
 }
 
 // Two far points of the line a x + b y = r, for drawing (the plot's range clips them).
 std::string line_segment(double a, double b, double r, double extent) {
   const double n2 = a * a + b * b;
-  if (n2 == 0) return "\n\n";
+  if (n2 == 0) return "";  // no line: the series is left out
   const double x0 = r * a / n2, y0 = r * b / n2, len = std::sqrt(n2);
   const double dx = -b / len * extent, dy = a / len * extent;
-  return fmt::format("{:.17g},{:.17g}\n{:.17g},{:.17g}\n\n\n", x0 - dx, y0 - dy, x0 + dx, y0 + dy);
+  return fmt::format("{:.17g},{:.17g}\n{:.17g},{:.17g}\n", x0 - dx, y0 - dy, x0 + dx, y0 + dy);
 }
 
 struct Point {
@@ -78,36 +64,47 @@ struct Point {
 
 // The solution points of a figure: written to NAME.points.csv, and drawn from it one plot item each,
 // so that the picture shows exactly the numbers in the file.
-std::string points_file(const fs::path& dir, const std::string& name, const std::string& header, const std::vector<Point>& pts,
+std::string points_file(const OutputDir& dir, const std::string& name, const std::string& header, const std::vector<Point>& pts,
                         bool three_d) {
   std::string csv = header + "\n";
   for (const auto& q : pts)
     csv += three_d ? fmt::format("{},{:.17g},{:.17g},{:.17g}\n", q.label, q.x, q.y, q.z)
                    : fmt::format("{},{:.17g},{:.17g}\n", q.label, q.x, q.y);
-  write_file(dir / (name + ".points.csv"), csv);
+  dir.write(name + ".points.csv", csv);
   std::string items;
   for (std::size_t i = 0; i < pts.size(); ++i)
-    items += fmt::format(", \\\n     '{}.points.csv' every ::{}::{} using {} with points pt {} ps 2 lw 2 title \"{}\" noenhanced", name, i + 1,
-                         i + 1, three_d ? "2:3:4" : "2:3", 4 + static_cast<int>(i), esc(pts[i].label));
+    items += fmt::format(", \\\n     '{}.points.csv' every ::{}::{} using {} with points pt {} ps 2 lw 2 title {} noenhanced", name, i + 1,
+                         i + 1, three_d ? "2:3:4" : "2:3", 4 + static_cast<int>(i), gnuplot_string(pts[i].label));
   return items;
 }
 
-std::string header_lines(const Context& c, const std::string& name, const std::string& title, int w = 900, int h = 700) {
+std::string header_lines(const Context& c, const std::string& title, int w = 900, int h = 700) {
   // clip two: a line whose two ends lie beyond the range is still drawn where it crosses it.
-  return terminal(c, name, w, h) + "set datafile separator comma\nset grid\nset clip two\nset key below noenhanced\n" +
-         fmt::format("set title \"{}\\n{}\" noenhanced\n", esc(c.spec.name), esc(title));
+  return terminal(c, w, h) + "set datafile separator comma\nset grid\nset clip two\nset key below noenhanced\n" +
+         fmt::format("set title {}.\"\\n\".{} noenhanced\n", gnuplot_string(c.spec.name), gnuplot_string(title));
 }
 
 std::string label(const io::StrategySpec& s) { return io::strategy_label(s); }
 
-// `plot` (or `splot`) of the data sets of FILE.dat in order, each with its line style and title.
+// The data sets of a figure, written to FILE.dat as gnuplot blocks, and the `plot` (or `splot`) command
+// drawing each with its line style and title. A set with no data (a degenerate line) is left out, so
+// that gnuplot is never handed an empty block.
 struct Series {
-  std::string style, title;
+  std::string style, title, data;
 };
-std::string series(const std::string& verb, const std::string& file, const std::vector<Series>& list) {
-  std::string out = verb + " ";
-  for (std::size_t i = 0; i < list.size(); ++i)
-    out += fmt::format("{}'{}.dat' index {} with lines {} title '{}'", i ? ", \\\n      " : "", file, i, list[i].style, list[i].title);
+std::string series(const Context& c, const std::string& verb, const std::string& file, const std::vector<Series>& list) {
+  std::string dat, out = verb + " ";
+  int index = 0;
+  for (const auto& item : list) {
+    std::string block = item.data;
+    while (!block.empty() && block.back() == '\n') block.pop_back();
+    if (block.empty()) continue;
+    dat += block + "\n\n\n";  // a line end, then the two blank lines that end a gnuplot data block
+    out += fmt::format("{}'{}.dat' index {} with lines {} title {}", index ? ", \\\n      " : "", file, index, item.style,
+                       gnuplot_string(item.title));
+    ++index;
+  }
+  c.dir.write(file + ".dat", dat);
   return out;
 }
 
@@ -137,39 +134,42 @@ void contact_plane_view(Context& c) {
     x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
     extent = std::max({extent, std::fabs(q.x), std::fabs(q.y)});
   }
-  const double margin = std::max({0.6 * (x1 - x0), 0.6 * (y1 - y0), 0.15 * extent});
+  double margin = std::max({0.6 * (x1 - x0), 0.6 * (y1 - y0), 0.15 * extent});
+  if (!(margin > 0)) margin = 0.15 * fi.x() / s;  // every point at the origin: frame by the normal impulse's size
+  if (!(extent > 0)) extent = margin;
   // Traces on the restitution plane (P_n eliminated through it) of the t and z no-sliding planes.
-  std::string dat;
-  dat += line_segment(K(1, 1) - K(1, 0) * K(0, 1) / K(0, 0), K(1, 2) - K(1, 0) * K(0, 2) / K(0, 0),
-                      (p.m_prime * p.V_ri.y() - K(1, 0) * R / K(0, 0)) / s, 3 * extent);
-  dat += line_segment(K(2, 1) - K(2, 0) * K(0, 1) / K(0, 0), K(2, 2) - K(2, 0) * K(0, 2) / K(0, 0),
-                      (p.m_prime * p.V_ri.z() - K(2, 0) * R / K(0, 0)) / s, 3 * extent);
+  const std::string t_trace = line_segment(K(1, 1) - K(1, 0) * K(0, 1) / K(0, 0), K(1, 2) - K(1, 0) * K(0, 2) / K(0, 0),
+                                           (p.m_prime * p.V_ri.y() - K(1, 0) * R / K(0, 0)) / s, 3 * extent);
+  const std::string z_trace = line_segment(K(2, 1) - K(2, 0) * K(0, 1) / K(0, 0), K(2, 2) - K(2, 0) * K(0, 2) / K(0, 0),
+                                           (p.m_prime * p.V_ri.z() - K(2, 0) * R / K(0, 0)) / s, 3 * extent);
   // The solution planes of PC-Crash (phi_FI, eq 15) and Wach (phi, eq 21) through the origin.
-  for (double phi : {std::atan2(fi.z(), fi.y()), std::atan2(p.V_ri.z(), p.V_ri.y())})
-    dat += fmt::format("{:.17g},{:.17g}\n{:.17g},{:.17g}\n\n\n", -3 * extent * std::cos(phi), -3 * extent * std::sin(phi),
-                       3 * extent * std::cos(phi), 3 * extent * std::sin(phi));
+  std::string plane_lines[2];
+  const double phis[2] = {std::atan2(fi.z(), fi.y()), std::atan2(p.V_ri.z(), p.V_ri.y())};
+  for (int j = 0; j < 2; ++j)
+    plane_lines[j] = fmt::format("{:.17g},{:.17g}\n{:.17g},{:.17g}\n", -3 * extent * std::cos(phis[j]), -3 * extent * std::sin(phis[j]),
+                                 3 * extent * std::cos(phis[j]), 3 * extent * std::sin(phis[j]));
+  std::string cone;
   // The GIR cone |P_cp| = GIR P_n cut by the restitution plane: rho = GIR R / (a1 + GIR (b1 cos + c1 sin)).
   const double gir = case_gir(p);
   for (int i = 0; i <= 360; ++i) {
     const double th = i * M_PI / 180, den = K(0, 0) + gir * (K(0, 1) * std::cos(th) + K(0, 2) * std::sin(th));
     if (den <= 0) {
-      dat += "\n";
+      cone += "\n";
       continue;
     }
-    dat += fmt::format("{:.17g},{:.17g}\n", gir * R / den / s * std::cos(th), gir * R / den / s * std::sin(th));
+    cone += fmt::format("{:.17g},{:.17g}\n", gir * R / den / s * std::cos(th), gir * R / den / s * std::sin(th));
   }
-  const fs::path dir = c.o.out_dir;
-  write_file(dir / "contact_plane.dat", dat);
-  std::string gp = header_lines(c, "contact_plane", "contact-plane view on the restitution plane (eps = " + c.spec.restitution.text + ")");
-  gp += fmt::format("set xlabel \"P_t [{}]\"\nset ylabel \"P_z [{}]\"\n", c.imp_unit, c.imp_unit);
-  gp += fmt::format("set xrange [{:.6g}:{:.6g}]\nset yrange [{:.6g}:{:.6g}]\n", x0 - margin, x1 + margin, y0 - margin, y1 + margin);
-  gp += series("plot", "contact_plane", {{"lw 2 lc rgb '#1f77b4'", "t no-sliding plane"},
-                                         {"lw 2 lc rgb '#ff7f0e'", "z no-sliding plane"},
-                                         {"dt 2 lc rgb '#2ca02c'", "PC-Crash plane (phi_FI)"},
-                                         {"dt 3 lc rgb '#9467bd'", "Wach plane (phi)"},
-                                         {"lc rgb '#7f7f7f'", "GIR cone"}});
-  gp += points_file(dir, "contact_plane", "label,P_t,P_z", pts, false) + "\n";
-  run_gnuplot(c, "contact_plane", gp);
+  if (cone.find(',') == std::string::npos) cone.clear();
+  std::string gp = header_lines(c, "contact-plane view on the restitution plane (eps = " + c.spec.restitution.text + ")");
+  gp += fmt::format("set xlabel {}\nset ylabel {}\n", gnuplot_string("P_t [" + c.imp_unit + "]"), gnuplot_string("P_z [" + c.imp_unit + "]"));
+  gp += fmt::format("set xrange [{:.17g}:{:.17g}]\nset yrange [{:.17g}:{:.17g}]\n", x0 - margin, x1 + margin, y0 - margin, y1 + margin);
+  gp += series(c, "plot", "contact_plane", {{"lw 2 lc rgb '#1f77b4'", "t no-sliding plane", t_trace},
+                                            {"lw 2 lc rgb '#ff7f0e'", "z no-sliding plane", z_trace},
+                                            {"dt 2 lc rgb '#2ca02c'", "PC-Crash plane (phi_FI)", plane_lines[0]},
+                                            {"dt 3 lc rgb '#9467bd'", "Wach plane (phi)", plane_lines[1]},
+                                            {"lc rgb '#7f7f7f'", "GIR cone", cone}});
+  gp += points_file(c.dir, "contact_plane", "label,P_t,P_z", pts, false) + "\n";
+  draw(c, "contact_plane", gp);
 }
 
 // P_n against the in-plane impulse on the plane through n and the strategy's contact-plane impulse
@@ -189,31 +189,26 @@ void solution_plane_view(Context& c, std::size_t k) {
   const double xs[] = {sol.x, gir * ymax, cir * ymax, 0.0};
   double xmin = 0, xmax = 0;
   for (double x : xs) xmin = std::min(xmin, x), xmax = std::max(xmax, x);
-  const double pad = 0.15 * (xmax - xmin + 1e-300);
-  std::string dat;
+  const double pad = xmax > xmin ? 0.15 * (xmax - xmin) : 0.15 * ymax;  // no in-plane impulse: frame by P_n
   // Lines of the plane, in (x, y) = (P_u, P_n): coefficients (K_row . u, K_row . n).
   auto line = [&](const V3& row, double rhs) { return line_segment(row.dot(u), row.dot(n), rhs / s, 10 * (ymax + xmax - xmin)); };
   const V3 Kn = K.row(0).transpose(), Ku = K.transpose() * u, Kw = K.transpose() * w;
-  dat += line(Kn, p.m_prime * p.V_ri.x());                      // maximum compression
-  dat += line(Kn, p.m_prime * (1 + p.restitution) * p.V_ri.x());  // restitution
-  dat += line(Ku, p.m_prime * u.dot(p.V_ri));                   // no sliding along the plane
-  dat += line(Kw, p.m_prime * w.dot(p.V_ri));                   // no sliding across it
-  for (double mu : {cir, gir}) dat += fmt::format("0,0\n{:.17g},{:.17g}\n\n\n", mu * 10 * ymax, 10 * ymax);
+  auto ray = [&](double mu) { return fmt::format("0,0\n{:.17g},{:.17g}\n", mu * 10 * ymax, 10 * ymax); };
   const std::string name = fmt::format("solution_plane_{}", k + 1);
-  const fs::path dir = c.o.out_dir;
-  write_file(dir / (name + ".dat"), dat);
-  std::string gp = header_lines(c, name, fmt::format("solution plane of {} (angle {:.4g} deg from t towards z)", label(c.spec.strategies[k]),
+  std::string gp = header_lines(c, fmt::format("solution plane of {} (angle {:.4g} deg from t towards z)", label(c.spec.strategies[k]),
                                                      std::atan2(ax.s, ax.c) * 180 / M_PI));
-  gp += fmt::format("set xlabel \"in-plane impulse P_u [{}]\"\nset ylabel \"P_n [{}]\"\n", c.imp_unit, c.imp_unit);
-  gp += fmt::format("set xrange [{:.6g}:{:.6g}]\nset yrange [0:{:.6g}]\n", xmin - pad, xmax + pad, ymax);
-  gp += series("plot", name, {{"lw 2 lc rgb '#000000'", "maximum compression"},
-                              {"dt 2 lc rgb '#000000'", "restitution (eps = " + c.spec.restitution.text + ")"},
-                              {"lw 2 lc rgb '#1f77b4'", "no sliding along the plane"},
-                              {"lw 2 lc rgb '#ff7f0e'", "no sliding across the plane"},
-                              {"dt 3 lc rgb '#2ca02c'", fmt::format("CIR = {:.4g}", cir)},
-                              {"dt 4 lc rgb '#d62728'", fmt::format("GIR = {:.4g}", gir)}});
-  gp += points_file(dir, name, "label,P_u,P_n", {sol}, false) + "\n";
-  run_gnuplot(c, name, gp);
+  gp += fmt::format("set xlabel {}\nset ylabel {}\n", gnuplot_string("in-plane impulse P_u [" + c.imp_unit + "]"),
+                    gnuplot_string("P_n [" + c.imp_unit + "]"));
+  gp += fmt::format("set xrange [{:.17g}:{:.17g}]\nset yrange [0:{:.17g}]\n", xmin - pad, xmax + pad, ymax);
+  gp += series(c, "plot", name, {{"lw 2 lc rgb '#000000'", "maximum compression", line(Kn, p.m_prime * p.V_ri.x())},
+                                 {"dt 2 lc rgb '#000000'", "restitution (eps = " + c.spec.restitution.text + ")",
+                                  line(Kn, p.m_prime * (1 + p.restitution) * p.V_ri.x())},
+                                 {"lw 2 lc rgb '#1f77b4'", "no sliding along the plane", line(Ku, p.m_prime * u.dot(p.V_ri))},
+                                 {"lw 2 lc rgb '#ff7f0e'", "no sliding across the plane", line(Kw, p.m_prime * w.dot(p.V_ri))},
+                                 {"dt 3 lc rgb '#2ca02c'", fmt::format("CIR = {:.4g}", cir), ray(cir)},
+                                 {"dt 4 lc rgb '#d62728'", fmt::format("GIR = {:.4g}", gir), ray(gir)}});
+  gp += points_file(c.dir, name, "label,P_u,P_n", {sol}, false) + "\n";
+  draw(c, name, gp);
 }
 
 // The three fundamental planes, the restitution plane, the Critical Impulse Line and the solutions in
@@ -223,9 +218,9 @@ void impulse_space_view(Context& c) {
   const double s = c.f.impulse;
   const V3 P0 = c.a.space.P_max_loss, cil = critical_line_point(p), d = c.a.space.cil_direction;
   const double L = 0.5 * P0.norm();
-  std::string dat;
   // A square patch of a plane (unit normal nrm) centred at `centre`, as a mesh of lines.
   auto patch = [&](const V3& nrm, const V3& centre) {
+    std::string dat;
     V3 e1 = nrm.cross(V3::UnitX());
     if (e1.norm() < 1e-6) e1 = nrm.cross(V3::UnitY());
     e1.normalize();
@@ -236,29 +231,29 @@ void impulse_space_view(Context& c) {
         dat += fmt::format("{:.17g},{:.17g},{:.17g}\n{:.17g},{:.17g},{:.17g}\n\n", q0.y() / s, q0.z() / s, q0.x() / s, q1.y() / s,
                            q1.z() / s, q1.x() / s);
       }
-    dat += "\n";
+    return dat;
   };
-  for (int k = 0; k < 3; ++k) patch(c.a.space.plane_normal.row(k).transpose(), P0);
-  patch(c.a.space.plane_normal.row(0).transpose(), cil);  // the case's restitution plane, through the CIL point
   const V3 a0 = P0 - 1.5 * L * d, a1 = P0 + 3 * L * d;
-  dat += fmt::format("{:.17g},{:.17g},{:.17g}\n{:.17g},{:.17g},{:.17g}\n\n\n", a0.y() / s, a0.z() / s, a0.x() / s, a1.y() / s, a1.z() / s,
-                     a1.x() / s);
+  const std::string cil_line = fmt::format("{:.17g},{:.17g},{:.17g}\n{:.17g},{:.17g},{:.17g}\n", a0.y() / s, a0.z() / s, a0.x() / s,
+                                           a1.y() / s, a1.z() / s, a1.x() / s);
+  auto plane = [&](int k) { return V3(c.a.space.plane_normal.row(k).transpose()); };
   std::vector<Point> pts{{"maximum energy loss", P0.y() / s, P0.z() / s, P0.x() / s}};
   for (std::size_t k = 0; k < c.a.solutions.size(); ++k) {
     const V3& P = c.a.solutions[k].impulse.P_C;
     pts.push_back({label(c.spec.strategies[k]), P.y() / s, P.z() / s, P.x() / s});
   }
-  const fs::path dir = c.o.out_dir;
-  write_file(dir / "impulse_space.dat", dat);
-  std::string gp = header_lines(c, "impulse_space", "impulse space: fundamental planes, restitution plane, Critical Impulse Line", 1000, 800);
-  gp += fmt::format("set xlabel \"P_t [{0}]\"\nset ylabel \"P_z [{0}]\"\nset zlabel \"P_n [{0}]\" rotate\nset view 62, 35\nset xyplane 0\n", c.imp_unit);
-  gp += series("splot", "impulse_space", {{"lc rgb '#000000'", "maximum-compression plane"},
-                                          {"lc rgb '#1f77b4'", "t no-sliding plane"},
-                                          {"lc rgb '#ff7f0e'", "z no-sliding plane"},
-                                          {"dt 2 lc rgb '#7f7f7f'", "restitution plane"},
-                                          {"lw 3 lc rgb '#d62728'", "Critical Impulse Line"}});
-  gp += points_file(dir, "impulse_space", "label,P_t,P_z,P_n", pts, true) + "\n";
-  run_gnuplot(c, "impulse_space", gp);
+  std::string gp = header_lines(c, "impulse space: fundamental planes, restitution plane, Critical Impulse Line", 1000, 800);
+  gp += fmt::format("set xlabel {}\nset ylabel {}\nset zlabel {} rotate\nset view 62, 35\nset xyplane 0\n",
+                    gnuplot_string("P_t [" + c.imp_unit + "]"), gnuplot_string("P_z [" + c.imp_unit + "]"),
+                    gnuplot_string("P_n [" + c.imp_unit + "]"));
+  gp += series(c, "splot", "impulse_space", {{"lc rgb '#000000'", "maximum-compression plane", patch(plane(0), P0)},
+                                             {"lc rgb '#1f77b4'", "t no-sliding plane", patch(plane(1), P0)},
+                                             {"lc rgb '#ff7f0e'", "z no-sliding plane", patch(plane(2), P0)},
+                                             // the case's restitution plane, through the CIL point
+                                             {"dt 2 lc rgb '#7f7f7f'", "restitution plane", patch(plane(0), cil)},
+                                             {"lw 3 lc rgb '#d62728'", "Critical Impulse Line", cil_line}});
+  gp += points_file(c.dir, "impulse_space", "label,P_t,P_z,P_n", pts, true) + "\n";
+  draw(c, "impulse_space", gp);
 }
 
 // Post-impact sliding along t and z, swerve and energy loss against mu (0 to 1.5 GIR) and against eps.
@@ -279,60 +274,72 @@ void sweeps(Context& c, std::size_t k) {
   };
   const Strategy<double> as_given = io::to_strategy<double>(spec);
   const double fv = c.f.velocity, fe = c.f.energy;
+  // A case with no contact-plane impulse has GIR = 0: sweep mu over [0, 1] instead of an empty range.
+  const bool by_gir = gir > 0 && std::isfinite(gir);
+  const double mu_max = by_gir ? 1.5 * gir : 1.0;
   for (const bool over_mu : {true, false}) {
     std::string csv = over_mu ? "mu,V_t_after,V_z_after,swerve_deg,energy_loss\n" : "eps,V_t_after,V_z_after,swerve_deg,energy_loss\n";
     const int n = over_mu ? 60 : 40;
-    bool swerve_defined = false;
+    double lo[4], hi[4];
+    std::fill(lo, lo + 4, INFINITY);
+    std::fill(hi, hi + 4, -INFINITY);
     for (int i = 0; i <= n; ++i) {
-      const double x = over_mu ? 1.5 * gir * i / n : static_cast<double>(i) / n;
+      const double x = over_mu ? mu_max * i / n : static_cast<double>(i) / n;
       Scene<double> sc = c.scene;
       if (!over_mu) sc.restitution = x;
       try {
         const Solution<double> sol = analyze(sc, {over_mu ? with_mu(x) : as_given}, c.o.engine).solutions[0];
-        swerve_defined = swerve_defined || sol.swerve_deg.has_value();
-        csv += fmt::format("{:.17g},{:.17g},{:.17g},{},{:.17g}\n", x, sol.V_rf.y() / fv, sol.V_rf.z() / fv,
-                           sol.swerve_deg ? fmt::format("{:.17g}", *sol.swerve_deg) : std::string("NaN"), sol.energy_loss / fe);
+        const double y[4] = {sol.V_rf.y() / fv, sol.V_rf.z() / fv, sol.swerve_deg ? *sol.swerve_deg : NAN, sol.energy_loss / fe};
+        for (int q = 0; q < 4; ++q)
+          if (std::isfinite(y[q])) lo[q] = std::min(lo[q], y[q]), hi[q] = std::max(hi[q], y[q]);
+        csv += fmt::format("{:.17g},{:.17g},{:.17g},{},{:.17g}\n", x, y[0], y[1],
+                           sol.swerve_deg ? fmt::format("{:.17g}", y[2]) : std::string("NaN"), y[3]);
       } catch (const SolveError&) {
         csv += "\n";  // no impulse at this value: a gap in the curves
       }
     }
     const std::string name = fmt::format("sweep_{}_{}", over_mu ? "mu" : "eps", k + 1);
-    write_file(fs::path(c.o.out_dir) / (name + ".csv"), csv);
+    c.dir.write(name + ".csv", csv);
     const std::string xl = over_mu ? (spec.kind == io::StrategySpec::Kind::brach ? "mu_t" : "mu") : "restitution eps";
-    std::string gp = header_lines(c, name, fmt::format("{} against {} ({})", label(spec), xl, over_mu ? "0 to 1.5 GIR" : "0 to 1"), 1000, 800);
-    gp += fmt::format("set key off\nunset title\nset multiplot layout 2,2 title \"{}\\n{} against {}\" noenhanced\n", esc(c.spec.name),
-                      esc(label(spec)), xl);
+    const std::string span = over_mu ? (by_gir ? "0 to 1.5 GIR" : "0 to 1, GIR = 0") : "0 to 1";
+    std::string gp = header_lines(c, fmt::format("{} against {} ({})", label(spec), xl, span), 1000, 800);
+    gp += fmt::format("set key off\nunset title\nset multiplot layout 2,2 title {}.\"\\n\".{} noenhanced\n",
+                      gnuplot_string(c.spec.name), gnuplot_string(label(spec) + " against " + xl));
+    gp += fmt::format("set xrange [0:{:.17g}]\n", over_mu ? mu_max : 1.0);
     const char* titles[] = {"sliding along t after", "sliding along z after (swerve)", "swerve angle", "energy loss"};
     const std::string units[] = {c.vel_unit, c.vel_unit, "deg", c.energy_unit};
     for (int q = 0; q < 4; ++q) {
-      if (q == 2 && !swerve_defined) {  // no sliding after the impact anywhere: nothing to draw
-        gp += "set title \"swerve angle\"\nunset xlabel\nunset ylabel\nset label 1 \"no sliding after the impact: swerve undefined\" "
-              "at graph 0.5, 0.5 center\nset xrange [0:1]\nset yrange [0:1]\nunset xtics\nunset ytics\nplot 2 notitle\n"
-              "unset label 1\nset xtics\nset ytics\nset autoscale\n";
+      if (!(lo[q] <= hi[q])) {  // nothing finite to draw (no sliding after the impact: swerve undefined)
+        gp += fmt::format("set title {}\nunset xlabel\nunset ylabel\nset label 1 {} at graph 0.5, 0.5 center\nset yrange [0:1]\n"
+                          "unset xtics\nunset ytics\nplot 2 notitle\nunset label 1\nset xtics\nset ytics\n",
+                          gnuplot_string(titles[q]),
+                          gnuplot_string(q == 2 ? "no sliding after the impact: swerve undefined" : "no value to draw"));
         continue;
       }
-      gp += fmt::format("set title \"{}\"\nset xlabel \"{}\" noenhanced\nset ylabel \"[{}]\"\nplot '{}.csv' using 1:{} skip 1 with linespoints pt 7 ps 0.4\n",
-                        titles[q], xl, units[q], name, q + 2);
+      const auto [y0, y1] = nonempty(lo[q], hi[q], 0);
+      gp += fmt::format("set title {}\nset xlabel {} noenhanced\nset ylabel {}\nset yrange [{:.17g}:{:.17g}]\n"
+                        "plot '{}.csv' using 1:{} skip 1 with linespoints pt 7 ps 0.4\n",
+                        gnuplot_string(titles[q]), gnuplot_string(xl), gnuplot_string("[" + units[q] + "]"), y0, y1, name, q + 2);
     }
     gp += "unset multiplot\n";
-    run_gnuplot(c, name, gp);
+    draw(c, name, gp);
   }
 }
 
 }  // namespace
 
 std::string plot(const io::CaseSpec& spec, const PlotOptions& o) {
-  if (std::system("gnuplot --version >/dev/null 2>&1") != 0)
-    throw std::runtime_error("gnuplot not found: install it (Debian: apt-get install gnuplot-nox) or put it on PATH");
-  fs::create_directories(o.out_dir);
+  require_gnuplot();
   const Scene<double> scene = io::to_scene<double>(spec);
   const Analysis<double> a = analyze(scene, io::to_strategies<double>(spec), o.engine);
-  Context c{spec, o, scene, a, problem_of(a, scene.restitution), unit_factors<double>(spec.units),
-            io::unit_label(spec.units, "impulse"), io::unit_label(spec.units, "velocity"), io::unit_label(spec.units, "energy"), ""};
+  const OutputDir dir(o.out_dir);
+  Context c{spec, o, dir, scene, a, problem_of(a, scene.restitution), unit_factors<double>(spec.units),
+            io::unit_label(spec.units, "impulse"), io::unit_label(spec.units, "velocity"), io::unit_label(spec.units, "energy"), "", ""};
   contact_plane_view(c);
   for (std::size_t k = 0; k < a.solutions.size(); ++k) solution_plane_view(c, k);
   impulse_space_view(c);
   for (std::size_t k = 0; k < a.solutions.size(); ++k) sweeps(c, k);
+  std::fputs(c.warnings.c_str(), stderr);
   return c.written;
 }
 

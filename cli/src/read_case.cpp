@@ -1,13 +1,22 @@
-// Structural validation of a case file: every rejection names the JSON path and the problem.
+// Structural validation of a case file: every rejection names the JSON path and the problem. Limits on
+// numbers are checked on the exact decimal as written, the value every precision computes with.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <cstring>
 #include <set>
 
 #include <fmt/format.h>
 
 #include "impact3d/case/case_spec.hpp"
+#include "impact3d/case/decimal.hpp"
+#include "impact3d/case/escape.hpp"
 #include "impact3d/case/json_literals.hpp"
+#include "impact3d/case/limits.hpp"
 #include "impact3d/case/strategy_option.hpp"
 
 namespace impact3d::io {
@@ -15,8 +24,12 @@ namespace {
 
 using json = nlohmann::json;
 
-// Larger magnitudes are no vehicle collision and would overflow energies and products of inertia.
-constexpr double kMaxMagnitude = 1e12;
+// Larger magnitudes are no vehicle collision and would overflow energies and products of inertia;
+// smaller non-zero ones would underflow double, so that precisions would disagree on the input itself.
+const Decimal kMax = parse_decimal(limits::kMaxMagnitude), kMin = parse_decimal(limits::kMinMagnitude);
+const Decimal kZero{}, kOne = parse_decimal("1");
+
+Decimal decimal(const Number& n) { return parse_decimal(n.text); }
 
 const char* type_name(const json& v) {
   switch (v.type()) {
@@ -37,14 +50,14 @@ class Reader {
   explicit Reader(const ParsedJson& p) : parsed_(p) {}
 
   [[noreturn]] void fail(const std::string& ptr, const std::string& msg) const {
-    throw CaseError(display_path(ptr), msg);
+    throw CaseError(ptr, msg);
   }
 
   const json& object(const json& v, const std::string& ptr, std::set<std::string> allowed) const {
     if (!v.is_object()) fail(ptr, fmt::format("expected an object, got {}", type_name(v)));
     for (const auto& [k, _] : v.items()) {
       if (!k.empty() && k[0] == '_') continue;  // comments and private extensions
-      if (!allowed.count(k)) fail(ptr + "/" + k, "unknown key (keys starting with '_' are ignored)");
+      if (!allowed.count(k)) fail(member_path(ptr, k), "unknown key (keys starting with '_' are ignored)");
     }
     return v;
   }
@@ -56,40 +69,43 @@ class Reader {
 
   const json& required(const json& obj, const std::string& ptr, const std::string& key) const {
     auto* v = optional(obj, key);
-    if (!v) fail(ptr + "/" + key, "missing");
+    if (!v) fail(member_path(ptr, key), "missing");
     return *v;
   }
 
   Number number(const json& v, const std::string& ptr) const {
     if (!v.is_number()) fail(ptr, fmt::format("expected a number, got {}", type_name(v)));
     const auto lit = parsed_.literal.find(ptr);
-    Number n{lit == parsed_.literal.end() ? v.dump() : lit->second, v.get<double>(), display_path(ptr)};
+    Number n{lit == parsed_.literal.end() ? v.dump() : lit->second, v.get<double>(), ptr};
     if (!std::isfinite(n.value)) fail(ptr, fmt::format("not a finite number ({})", n.text));
-    if (std::fabs(n.value) > kMaxMagnitude)
-      fail(ptr, fmt::format("out of range: magnitude {} exceeds {:g}", n.text, kMaxMagnitude));
+    const Decimal d = decimal(n);
+    if (compare_magnitude(d, kMax) > 0)
+      fail(ptr, fmt::format("out of range: magnitude {} exceeds {:g}", n.text, std::stod(limits::kMaxMagnitude)));
+    if (!d.zero() && compare_magnitude(d, kMin) < 0)
+      fail(ptr, fmt::format("out of range: {} is not zero but below {:g} in magnitude", n.text, std::stod(limits::kMinMagnitude)));
     return n;
   }
 
   Number number_or(const json& obj, const std::string& ptr, const std::string& key) const {
-    if (auto* v = optional(obj, key)) return number(*v, ptr + "/" + key);
-    return Number{"0", 0.0, display_path(ptr + "/" + key)};
+    if (auto* v = optional(obj, key)) return number(*v, member_path(ptr, key));
+    return Number{"0", 0.0, member_path(ptr, key)};
   }
 
   Number positive(const json& v, const std::string& ptr) const {
     Number n = number(v, ptr);
-    if (!(n.value > 0)) fail(ptr, fmt::format("must be > 0 (got {})", n.text));
+    if (compare(decimal(n), kZero) <= 0) fail(ptr, fmt::format("must be > 0 (got {})", n.text));
     return n;
   }
 
   Vector3 vector3(const json& v, const std::string& ptr) const {
     if (!v.is_array()) fail(ptr, fmt::format("expected an array of 3 numbers, got {}", type_name(v)));
     if (v.size() != 3) fail(ptr, fmt::format("expected 3 numbers, got {}", v.size()));
-    return {number(v[0], ptr + "/0"), number(v[1], ptr + "/1"), number(v[2], ptr + "/2")};
+    return {number(v[0], element_path(ptr, 0)), number(v[1], element_path(ptr, 1)), number(v[2], element_path(ptr, 2))};
   }
 
   Vector3 vector3_or_zero(const json& obj, const std::string& ptr, const std::string& key) const {
-    if (auto* v = optional(obj, key)) return vector3(*v, ptr + "/" + key);
-    const std::string p = display_path(ptr + "/" + key);
+    if (auto* v = optional(obj, key)) return vector3(*v, member_path(ptr, key));
+    const std::string p = member_path(ptr, key);
     return {Number{"0", 0.0, p}, Number{"0", 0.0, p}, Number{"0", 0.0, p}};
   }
 
@@ -99,25 +115,25 @@ class Reader {
   }
 
   void inertia(VehicleSpec& veh, const json& v, const std::string& ptr) const {
-    veh.inertia_path = display_path(ptr);
-    const std::string zero_path = display_path(ptr);
+    veh.inertia_path = ptr;
+    const std::string zero_path = ptr;
     if (v.is_object()) {
       object(v, ptr, {"Ixx", "Iyy", "Izz"});
       const char* keys[3] = {"Ixx", "Iyy", "Izz"};
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
-          veh.inertia[i][j] = i == j ? positive(required(v, ptr, keys[i]), ptr + "/" + keys[i])
+          veh.inertia[i][j] = i == j ? positive(required(v, ptr, keys[i]), member_path(ptr, keys[i]))
                                      : Number{"0", 0.0, zero_path};
       return;
     }
     if (!v.is_array() || v.size() != 3)
       fail(ptr, "expected a 3x3 tensor [[Ixx, Ixy, Ixz], ...] or {\"Ixx\", \"Iyy\", \"Izz\"}");
-    for (int i = 0; i < 3; ++i) veh.inertia[i] = vector3(v[i], ptr + "/" + std::to_string(i));
+    for (int i = 0; i < 3; ++i) veh.inertia[i] = vector3(v[i], element_path(ptr, i));
     for (int i = 0; i < 3; ++i) {
-      if (!(veh.inertia[i][i].value > 0))
+      if (compare(decimal(veh.inertia[i][i]), kZero) <= 0)
         fail(ptr, fmt::format("not positive definite: diagonal entry [{}][{}] = {}", i, i, veh.inertia[i][i].text));
       for (int j = i + 1; j < 3; ++j)
-        if (veh.inertia[i][j].value != veh.inertia[j][i].value)
+        if (!(decimal(veh.inertia[i][j]) == decimal(veh.inertia[j][i])))
           fail(ptr, fmt::format("not symmetric: [{}][{}] = {} but [{}][{}] = {}", i, j, veh.inertia[i][j].text, j, i,
                                 veh.inertia[j][i].text));
     }
@@ -127,45 +143,46 @@ class Reader {
     object(v, ptr, {"name", "mass", "inertia", "orientation_deg", "orientation_matrix", "velocity", "angular_velocity",
                     "impulse_center"});
     VehicleSpec veh;
-    if (auto* n = optional(v, "name")) veh.name = string(*n, ptr + "/name");
-    veh.mass = positive(required(v, ptr, "mass"), ptr + "/mass");
-    inertia(veh, required(v, ptr, "inertia"), ptr + "/inertia");
+    if (auto* n = optional(v, "name")) veh.name = string(*n, member_path(ptr, "name"));
+    veh.mass = positive(required(v, ptr, "mass"), member_path(ptr, "mass"));
+    inertia(veh, required(v, ptr, "inertia"), member_path(ptr, "inertia"));
     static const json empty = json::object();
     const json* o = optional(v, "orientation_deg");
     if (const json* m = optional(v, "orientation_matrix")) {
-      if (o) fail(ptr + "/orientation_matrix", "give either orientation_deg or orientation_matrix, not both");
-      if (!m->is_array() || m->size() != 3) fail(ptr + "/orientation_matrix", "expected a 3x3 rotation matrix (rows of R_WB)");
+      const std::string mptr = member_path(ptr, "orientation_matrix");
+      if (o) fail(mptr, "give either orientation_deg or orientation_matrix, not both");
+      if (!m->is_array() || m->size() != 3) fail(mptr, "expected a 3x3 rotation matrix (rows of R_WB)");
       std::array<Vector3, 3> rows;
-      for (int i = 0; i < 3; ++i) rows[i] = vector3((*m)[i], ptr + "/orientation_matrix/" + std::to_string(i));
+      for (int i = 0; i < 3; ++i) rows[i] = vector3((*m)[i], element_path(mptr, i));
       veh.orientation_matrix = rows;
-      veh.orientation_path = display_path(ptr + "/orientation_matrix");
+      veh.orientation_path = mptr;
     }
-    const std::string optr = ptr + "/orientation_deg";
+    const std::string optr = member_path(ptr, "orientation_deg");
     if (o) object(*o, optr, {"yaw", "pitch", "roll"});
     const json& orient = o ? *o : empty;
     veh.yaw = number_or(orient, optr, "yaw");
     veh.pitch = number_or(orient, optr, "pitch");
     veh.roll = number_or(orient, optr, "roll");
-    veh.velocity = vector3(required(v, ptr, "velocity"), ptr + "/velocity");
+    veh.velocity = vector3(required(v, ptr, "velocity"), member_path(ptr, "velocity"));
     veh.angular_velocity = vector3_or_zero(v, ptr, "angular_velocity");
-    veh.impulse_center = vector3(required(v, ptr, "impulse_center"), ptr + "/impulse_center");
+    veh.impulse_center = vector3(required(v, ptr, "impulse_center"), member_path(ptr, "impulse_center"));
     return veh;
   }
 
   ContactSpec contact(const json& v, const std::string& ptr) const {
     object(v, ptr, {"normal_yaw_deg", "normal_pitch_deg", "tangent_roll_deg", "normal", "tangent"});
     ContactSpec c;
-    c.path = display_path(ptr);
+    c.path = ptr;
     const bool angles = optional(v, "normal_yaw_deg") || optional(v, "normal_pitch_deg") || optional(v, "tangent_roll_deg");
     const bool vectors = optional(v, "normal") || optional(v, "tangent");
     if (angles && vectors) fail(ptr, "give either the angles (normal_yaw_deg, ...) or the vectors (normal, tangent), not both");
-    if (!angles && !vectors) fail(ptr + "/normal_yaw_deg", "missing (or give \"normal\" and \"tangent\" vectors)");
+    if (!angles && !vectors) fail(member_path(ptr, "normal_yaw_deg"), "missing (or give \"normal\" and \"tangent\" vectors)");
     c.by_vectors = vectors;
     if (vectors) {
-      c.normal = vector3(required(v, ptr, "normal"), ptr + "/normal");
-      c.tangent = vector3(required(v, ptr, "tangent"), ptr + "/tangent");
+      c.normal = vector3(required(v, ptr, "normal"), member_path(ptr, "normal"));
+      c.tangent = vector3(required(v, ptr, "tangent"), member_path(ptr, "tangent"));
     } else {
-      c.normal_yaw = number(required(v, ptr, "normal_yaw_deg"), ptr + "/normal_yaw_deg");
+      c.normal_yaw = number(required(v, ptr, "normal_yaw_deg"), member_path(ptr, "normal_yaw_deg"));
       c.normal_pitch = number_or(v, ptr, "normal_pitch_deg");
       c.tangent_roll = number_or(v, ptr, "tangent_roll_deg");
     }
@@ -173,26 +190,27 @@ class Reader {
   }
 
   Number non_negative(const json& obj, const std::string& ptr, const std::string& key) const {
-    Number n = number(required(obj, ptr, key), ptr + "/" + key);
-    if (n.value < 0) fail(ptr + "/" + key, fmt::format("must be >= 0 (got {})", n.text));
+    Number n = number(required(obj, ptr, key), member_path(ptr, key));
+    if (compare(decimal(n), kZero) < 0) fail(member_path(ptr, key), fmt::format("must be >= 0 (got {})", n.text));
     return n;
   }
 
   std::optional<Number> ratio_or_critical(const json& obj, const std::string& ptr, const std::string& key) const {
     const json& v = required(obj, ptr, key);
+    const std::string path = member_path(ptr, key);
     if (v.is_string()) {
       if (v.get<std::string>() == "critical") return std::nullopt;
-      fail(ptr + "/" + key, fmt::format("expected a number or \"critical\", got \"{}\"", v.get<std::string>()));
+      fail(path, fmt::format("expected a number or \"critical\", got {}", io::quoted(v.get<std::string>())));
     }
-    if (!v.is_number()) fail(ptr + "/" + key, fmt::format("expected a number or \"critical\", got {}", type_name(v)));
-    return number(v, ptr + "/" + key);
+    if (!v.is_number()) fail(path, fmt::format("expected a number or \"critical\", got {}", type_name(v)));
+    return number(v, path);
   }
 
   StrategySpec strategy(const json& v, const std::string& ptr) const {
     if (!v.is_object()) fail(ptr, fmt::format("expected an object, got {}", type_name(v)));
-    const std::string name = string(required(v, ptr, "name"), ptr + "/name");
+    const std::string name = string(required(v, ptr, "name"), member_path(ptr, "name"));
     StrategySpec s;
-    s.path = display_path(ptr);
+    s.path = ptr;
     if (name == "pc-crash") {
       object(v, ptr, {"name", "mu"});
       s.kind = StrategySpec::Kind::pc_crash;
@@ -202,9 +220,9 @@ class Reader {
       s.kind = StrategySpec::Kind::wach;
       s.mu = non_negative(v, ptr, "mu");
       if (auto* l = optional(v, "limit")) {
-        const std::string limit = string(*l, ptr + "/limit");
+        const std::string limit = string(*l, member_path(ptr, "limit"));
         if (limit == "gir") s.limit = WachLimit::gir;
-        else if (limit != "cir") fail(ptr + "/limit", fmt::format("expected \"cir\" or \"gir\", got \"{}\"", limit));
+        else if (limit != "cir") fail(member_path(ptr, "limit"), fmt::format("expected \"cir\" or \"gir\", got {}", io::quoted(limit)));
       }
     } else if (name == "brach") {
       object(v, ptr, {"name", "mu_t", "mu_z"});
@@ -212,36 +230,37 @@ class Reader {
       s.mu_t = ratio_or_critical(v, ptr, "mu_t");
       s.mu_z = ratio_or_critical(v, ptr, "mu_z");
     } else {
-      fail(ptr + "/name", fmt::format("unknown strategy \"{}\" (expected pc-crash, wach or brach)", name));
+      fail(member_path(ptr, "name"), fmt::format("unknown strategy {} (expected pc-crash, wach or brach)", io::quoted(name)));
     }
     return s;
   }
 
   CaseSpec read() const {
     const json& root = parsed_.doc;
-    object(root, "", {"name", "units", "vehicles", "contact", "restitution", "strategy"});
+    object(root, "$", {"name", "units", "vehicles", "contact", "restitution", "strategy"});
     CaseSpec c;
-    if (auto* n = optional(root, "name")) c.name = string(*n, "/name");
+    if (auto* n = optional(root, "name")) c.name = string(*n, "$.name");
     if (auto* u = optional(root, "units")) {
-      const std::string units = string(*u, "/units");
+      const std::string units = string(*u, "$.units");
       if (units == "US") c.units = Units::US;
-      else if (units != "SI") fail("/units", fmt::format("unknown unit system \"{}\" (expected \"SI\" or \"US\")", units));
+      else if (units != "SI") fail("$.units", fmt::format("unknown unit system {} (expected \"SI\" or \"US\")", io::quoted(units)));
     }
-    const json& vs = required(root, "", "vehicles");
-    if (!vs.is_array()) fail("/vehicles", fmt::format("expected an array of 2 vehicles, got {}", type_name(vs)));
-    if (vs.size() != 2) fail("/vehicles", fmt::format("expected 2 vehicles, got {}", vs.size()));
-    for (int i = 0; i < 2; ++i) c.vehicles[i] = vehicle(vs[i], "/vehicles/" + std::to_string(i));
-    c.contact = contact(required(root, "", "contact"), "/contact");
-    c.restitution = number(required(root, "", "restitution"), "/restitution");
-    if (c.restitution.value < 0 || c.restitution.value > 1)
-      fail("/restitution", fmt::format("must be in [0, 1] (got {})", c.restitution.text));
-    const json& st = required(root, "", "strategy");
+    const json& vs = required(root, "$", "vehicles");
+    if (!vs.is_array()) fail("$.vehicles", fmt::format("expected an array of 2 vehicles, got {}", type_name(vs)));
+    if (vs.size() != 2) fail("$.vehicles", fmt::format("expected 2 vehicles, got {}", vs.size()));
+    for (int i = 0; i < 2; ++i) c.vehicles[i] = vehicle(vs[i], element_path("$.vehicles", i));
+    c.contact = contact(required(root, "$", "contact"), "$.contact");
+    c.restitution = number(required(root, "$", "restitution"), "$.restitution");
+    const Decimal e = decimal(c.restitution);
+    if (compare(e, kZero) < 0 || compare(e, kOne) > 0)
+      fail("$.restitution", fmt::format("must be in [0, 1] (got {})", c.restitution.text));
+    const json& st = required(root, "$", "strategy");
     if (st.is_array()) {
-      if (st.empty()) fail("/strategy", "empty array: give at least one strategy");
+      if (st.empty()) fail("$.strategy", "empty array: give at least one strategy");
       c.strategy_is_array = true;
-      for (std::size_t i = 0; i < st.size(); ++i) c.strategies.push_back(strategy(st[i], "/strategy/" + std::to_string(i)));
+      for (std::size_t i = 0; i < st.size(); ++i) c.strategies.push_back(strategy(st[i], element_path("$.strategy", i)));
     } else {
-      c.strategies.push_back(strategy(st, "/strategy"));
+      c.strategies.push_back(strategy(st, "$.strategy"));
     }
     return c;
   }
@@ -253,6 +272,9 @@ class Reader {
 }  // namespace
 
 StrategySpec read_strategy_option(const std::string& text, int index) {
+  const std::string label = "--strategy[" + std::to_string(index) + "]";
+  if (!valid_utf8(text)) throw CaseError(label, "not valid UTF-8");
+  if (text.size() > limits::kCaseFileBytes) throw CaseError(label, "longer than a case file may be");
   std::string doc = text;
   if (text.empty() || text.front() != '{') {
     // name[:key=value,...] -> {"name": "...", "key": value}; values that are not JSON numbers are strings.
@@ -265,27 +287,46 @@ StrategySpec read_strategy_option(const std::string& text, int index) {
       const std::string item = rest.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
       const auto eq = item.find('=');
       const std::string key = item.substr(0, eq), value = eq == std::string::npos ? "" : item.substr(eq + 1);
-      const bool is_number = !value.empty() && json::accept(value) && json::parse(value).is_number();
+      const bool is_number = !value.empty() && (value[0] == '-' || std::isdigit(static_cast<unsigned char>(value[0]))) &&
+                             json::accept(value) && json::parse(value).is_number();
       doc += ", " + nlohmann::json(key).dump() + ": " + (is_number ? value : nlohmann::json(value).dump());
       pos = comma == std::string::npos ? rest.size() : comma + 1;
     }
     doc += "}";
   }
-  const std::string label = "--strategy[" + std::to_string(index) + "]";
-  try {
-    const ParsedJson parsed = parse_json_with_literals(doc);
-    return Reader(parsed).strategy(parsed.doc, "");
-  } catch (const CaseError& e) {
-    throw CaseError(label + e.path.substr(1), e.what());
-  }
+  const ParsedJson parsed = parse_json_with_literals(doc, label);
+  return Reader(parsed).strategy(parsed.doc, label);
 }
 
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw CaseError(path, "cannot read the file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+std::string read_text_file(const std::string& path, std::size_t max_bytes) {
+  // No blocking on a FIFO without a writer, no endless read of a device: the size is capped as read.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+  if (fd < 0) throw CaseError(path, fmt::format("cannot read the file ({})", std::strerror(errno)));
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
+    ::close(fd);
+    throw CaseError(path, "cannot read the file (a directory)");
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  std::string text;
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const int err = errno;
+      ::close(fd);
+      throw CaseError(path, fmt::format("cannot read the file ({})", std::strerror(err)));
+    }
+    if (n == 0) break;
+    if (text.size() + static_cast<std::size_t>(n) > max_bytes) {
+      ::close(fd);
+      throw CaseError(path, fmt::format("larger than {} bytes, the limit for this input", max_bytes));
+    }
+    text.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return text;
 }
 
 CaseSpec read_case(const std::string& json_text) {

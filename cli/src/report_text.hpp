@@ -90,7 +90,7 @@ std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   // A post-impact relative velocity inside the rounding bound is zero: say so instead of printing noise.
   auto vel = [&](const auto& s, const Scalar& v) {
     using std::abs;
-    if (abs(v) > s.velocity_roundoff) return p.num(v, f.velocity);
+    if (abs(v) > s.velocity_roundoff || !is_finite(s.velocity_roundoff)) return p.num(v, f.velocity);
     return "0 (|x| < " + io::scalar_to_text(Scalar(s.velocity_roundoff / f.velocity), 1) + ")";
   };
   auto opt = [&](const std::optional<Scalar>& v) { return v ? p.num(*v) : std::string("-"); };

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "impact3d/case/limits.hpp"
 #include "impact3d/numeric/strategy.hpp"
 #include "impact3d/numeric/units.hpp"
 
@@ -68,7 +69,7 @@ struct CaseSpec {
 // Parses and validates everything that needs no arithmetic; throws CaseError.
 CaseSpec read_case(const std::string& json_text);
 
-// The whole file; CaseError (path = the file) when it cannot be read.
-std::string read_text_file(const std::string& path);
+// The whole file, at most `max_bytes`; CaseError (path = the file) when it cannot be read or is larger.
+std::string read_text_file(const std::string& path, std::size_t max_bytes = limits::kCaseFileBytes);
 
 }  // namespace impact3d::io

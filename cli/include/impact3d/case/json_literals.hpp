@@ -1,8 +1,10 @@
-// JSON parsing that remembers the literal text of every number, keyed by JSON pointer.
+// JSON parsing within the input limits (limits.hpp), remembering the literal text of every number by
+// the JSON path of the value, as messages print it: "$.vehicles[0].mass".
 #pragma once
 
 #include <map>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -10,13 +12,20 @@ namespace impact3d::io {
 
 struct ParsedJson {
   nlohmann::json doc;
-  std::map<std::string, std::string> literal;  // JSON pointer -> number text
+  std::map<std::string, std::string> literal;  // JSON path -> number text (none below keys starting with '_')
 };
 
-// Throws CaseError (path "$") on a syntax error or a duplicated key.
-ParsedJson parse_json_with_literals(const std::string& text);
+// Throws CaseError naming the path on a syntax error, a duplicated key, a NUL byte, or a limit exceeded
+// (depth, number of values, length of a key or of a number literal, written exponent). `path` is the
+// root's name in messages ("$", or e.g. "--strategy[0]").
+ParsedJson parse_json_with_literals(std::string_view text, const std::string& root = "$");
 
-// "/vehicles/0/mass" -> "$.vehicles[0].mass"
-std::string display_path(const std::string& pointer);
+// The same checks, for documents whose number text is not needed (compare's results).
+nlohmann::json parse_json_bounded(std::string_view text, const std::string& root = "$");
+
+// Paths as printed: a member is ".key" when the key is an identifier, else ["key"] quoted and escaped;
+// an element is [index].
+std::string member_path(const std::string& parent, std::string_view key);
+std::string element_path(const std::string& parent, std::size_t index);
 
 }  // namespace impact3d::io

@@ -1,6 +1,6 @@
 // A small JSON emitter for results: numbers go out as text the caller formats (every digit of the
-// precision), which a generic JSON library would re-round. Throws on a non-finite number, so that a
-// result that overflowed is reported as an error instead of as invalid JSON.
+// precision), which a generic JSON library would re-round. A non-finite number is written as null:
+// JSON has no NaN, and the solution's warnings say which result is not finite (precision_warnings.hpp).
 #pragma once
 
 #include <stdexcept>
@@ -56,9 +56,8 @@ class JsonWriter {
   std::vector<bool> has_items_;
   bool pending_key_ = false;
 
-  static const std::string& finite(const std::string& number_text) {
-    if (number_text.find_first_of("ni") != std::string::npos)  // inf, nan
-      throw std::runtime_error("a result is not finite (" + number_text + ")");
+  static std::string finite(const std::string& number_text) {
+    if (number_text.find_first_of("ni") != std::string::npos) return "null";  // inf, nan
     return number_text;
   }
   void item() {

@@ -1,16 +1,19 @@
 // Decimal text <-> Scalar without passing through a narrower type.
 #pragma once
 
-#include <cctype>
-#include <cstdlib>
-
-#include <boost/multiprecision/cpp_int.hpp>
 #include <algorithm>
+#include <cstdlib>
 #include <limits>
 #include <locale>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
+
+#include <boost/multiprecision/cpp_int.hpp>
+
+#include "impact3d/case/decimal.hpp"
+#include "impact3d/case/limits.hpp"
 
 namespace impact3d::io {
 
@@ -21,23 +24,17 @@ Scalar scalar_from_text(const std::string& text) {
   } else if constexpr (std::is_same_v<Scalar, long double>) {
     return std::strtold(text.c_str(), nullptr);
   } else if constexpr (std::numeric_limits<Scalar>::is_exact) {
-    // A JSON number -?int(.frac)?([eE][+-]?exp)? as the exact fraction it denotes.
-    std::string digits;
-    long exponent = 0;
-    std::size_t i = 0;
-    const bool negative = !text.empty() && text[0] == '-';
-    if (negative) ++i;
-    for (; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i) digits += text[i];
-    if (i < text.size() && text[i] == '.')
-      for (++i; i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])); ++i, --exponent) digits += text[i];
-    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) exponent += std::stol(text.substr(i + 1));
+    // The exact fraction the literal denotes; the reader bounds the exponent (limits.hpp), and this
+    // refuses anything beyond it rather than build a power of ten of any size.
+    const Decimal d = parse_decimal(text);
+    if (d.zero()) return Scalar(0);
+    constexpr long kMaxExponent = 4 * limits::kExponent;
+    if (d.exponent > kMaxExponent || d.exponent < -kMaxExponent)
+      throw std::invalid_argument("scalar_from_text: exponent beyond the input limits");
     using Int = boost::multiprecision::cpp_int;
-    digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size()));  // a leading 0 would mean octal
-    Scalar value = Scalar(Int(digits.empty() ? "0" : digits));
-    const Scalar ten = Scalar(Int(10));
-    for (long k = 0; k < exponent; ++k) value *= ten;
-    for (long k = 0; k > exponent; --k) value /= ten;
-    return negative ? Scalar(-value) : value;
+    const Int power = boost::multiprecision::pow(Int(10), static_cast<unsigned>(d.exponent < 0 ? -d.exponent : d.exponent));
+    Scalar value = d.exponent >= 0 ? Scalar(Int(d.digits) * power) : Scalar(Int(d.digits)) / Scalar(power);
+    return d.negative ? Scalar(-value) : value;
   } else {
     return Scalar(text);
   }

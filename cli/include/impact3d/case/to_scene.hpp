@@ -53,8 +53,12 @@ void check_rotation(const Mat3<Scalar>& R, const std::string& path) {
       if (abs(E(i, j)) > worst) worst = abs(E(i, j));
     }
   const bool orthonormal = is_exact_v<Scalar> ? worst == Scalar(0) : worst <= Scalar(1) / Scalar(1000000000000LL);
-  if (!orthonormal)
-    throw CaseError(path, "not a rotation: R R^T differs from I by " + scalar_to_text(Scalar(worst), 3));
+  if (!orthonormal) {
+    std::string by;  // the same three digits at every precision
+    if constexpr (is_exact_v<Scalar>) by = scalar_to_text(worst.template convert_to<double>(), 3);
+    else by = scalar_to_text(Scalar(worst), 3);
+    throw CaseError(path, "not a rotation: R R^T differs from I by " + by);
+  }
   if (!(R.determinant() > Scalar(0))) throw CaseError(path, "not a rotation: its determinant is negative (a reflection)");
 }
 

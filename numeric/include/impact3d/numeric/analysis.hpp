@@ -9,6 +9,8 @@
 #include "impact3d/numeric/generated_engine.hpp"
 #include "impact3d/numeric/impulse_space.hpp"
 #include "impact3d/numeric/post_impact.hpp"
+#include "impact3d/numeric/precision_warnings.hpp"
+#include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/strategies/brach.hpp"
 #include "impact3d/numeric/strategies/pc_crash.hpp"
 #include "impact3d/numeric/strategies/wach.hpp"
@@ -21,11 +23,19 @@ struct Analysis {
   Scalar m_prime;
   Mat3<Scalar> K;
   Scalar kappa;                       // 2-norm condition number of K
+  Scalar amplification;               // of the inputs' rounding into the impulse (rounding.hpp)
   std::array<Mat3<Scalar>, 2> T;      // the paper's T_i = R_CB_i
   Vec3<Scalar> V_ri;                  // contact axes
   ImpulseSpace<Scalar> space;
   std::vector<Solution<Scalar>> solutions;
 };
+
+template <typename Scalar>
+bool case_finite(const Analysis<Scalar>& a) {
+  return is_finite(a.m_prime) && all_finite(a.K) && all_finite(a.V_ri) && all_finite(a.space.P_max_loss) &&
+         all_finite(a.space.cil_direction) && all_finite(a.space.plane_normal) && all_finite(a.space.plane_offset) &&
+         is_finite(a.space.restitution_offset);
+}
 
 template <typename E, typename Scalar>
 Problem<Scalar> make_problem(const Scene<Scalar>& s) {
@@ -34,14 +44,10 @@ Problem<Scalar> make_problem(const Scene<Scalar>& s) {
   p.K = E::coefficient_matrix(s);
   p.V_ri = relative_velocity_C(s);
   p.restitution = s.restitution;
-  // K is symmetric positive definite (I plus Gram-type terms), so its eigenvalues give the condition.
-  // Exact arithmetic has no rounding for it to amplify.
-  if constexpr (is_exact_v<Scalar>) {
-    p.kappa = 1;
-  } else {
-    Eigen::SelfAdjointEigenSolver<Mat3<Scalar>> eig(p.K, Eigen::EigenvaluesOnly);
-    p.kappa = eig.eigenvalues().maxCoeff() / eig.eigenvalues().minCoeff();
-  }
+  // K is symmetric positive definite (I plus Gram-type terms), so its eigenvalues give the condition;
+  // infinite where rounding made it indefinite. Exact arithmetic has no rounding for it to amplify.
+  p.kappa = rounding::spd_condition(p.K);
+  p.amplification = rounding::amplification(s, p.kappa);
   return p;
 }
 
@@ -62,10 +68,23 @@ Analysis<Scalar> analyze_with(const Scene<Scalar>& s, const std::vector<Strategy
   a.m_prime = p.m_prime;
   a.K = p.K;
   a.kappa = p.kappa;
+  a.amplification = p.amplification;
   a.T = {R_CB(s, 0), R_CB(s, 1)};
   a.V_ri = p.V_ri;
   a.space = impulse_space<E>(p);
-  for (const auto& st : strategies) a.solutions.push_back(post_impact(s, solve_impulse<E>(p, st), p.kappa));
+  for (std::size_t k = 0; k < strategies.size(); ++k) {
+    try {
+      a.solutions.push_back(post_impact(s, solve_impulse<E>(p, strategies[k]), p.kappa));
+    } catch (SolveError& e) {
+      e.strategy = k;
+      throw;
+    }
+    flag_precision(a.solutions.back(), p.amplification);
+  }
+  if (!case_finite(a))
+    for (auto& sol : a.solutions)
+      sol.warnings.push_back({WarningCode::not_finite, "a quantity of the case (m', K, its condition or the impulse-space "
+                                                       "geometry) is not finite at this precision"});
   return a;
 }
 
@@ -73,7 +92,7 @@ Analysis<Scalar> analyze_with(const Scene<Scalar>& s, const std::vector<Strategy
 // solves of the same collision (figures, sweeps of the constraints) start from.
 template <typename Scalar>
 Problem<Scalar> problem_of(const Analysis<Scalar>& a, const Scalar& restitution) {
-  return {a.m_prime, a.K, a.V_ri, restitution, a.kappa};
+  return {a.m_prime, a.K, a.V_ri, restitution, a.kappa, a.amplification};
 }
 
 // Throws SolveError when the bodies do not approach or a strategy's constraints admit no impulse.

@@ -64,6 +64,15 @@ bool is_finite(const Scalar& x) {
   }
 }
 
+// Every entry of an Eigen vector or matrix finite.
+template <typename Derived>
+bool all_finite(const Eigen::MatrixBase<Derived>& m) {
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j)
+      if (!is_finite(m(i, j))) return false;
+  return true;
+}
+
 // The largest integer <= x, for every scalar type.
 template <typename Scalar>
 Scalar floor_of(const Scalar& x) {

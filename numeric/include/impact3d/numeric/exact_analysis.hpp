@@ -41,11 +41,11 @@ ExactAnalysis exact_analyze_with(const Scene<rational>& s, const std::vector<Str
   const Problem<rational> p = make_problem<E>(s);
   if (!(p.V_ri.x() > 0)) throw SolveError("the bodies are not approaching at the impulse centre (V_rn <= 0)");
   ExactAnalysis a{p.m_prime, p.K, p.V_ri, E::full_impact(p, rational(0)), {}};
-  for (const auto& st : strategies) {
+  for (std::size_t k = 0; k < strategies.size(); ++k) {
     ExactResult r;
     try {
       ExactSolution x;
-      x.impulse = solve_impulse<E>(p, st);
+      x.impulse = solve_impulse<E>(p, strategies[k]);
       x.P_W = s.R_WC * x.impulse.P_C;
       x.after = {apply_impulse(s.body[0], x.P_W), apply_impulse(s.body[1], Vec3<rational>(-x.P_W))};
       Scene<rational> after = s;
@@ -59,7 +59,12 @@ ExactAnalysis exact_analyze_with(const Scene<rational>& s, const std::vector<Str
     } catch (const Irrational& e) {
       r.not_rational = e.what();
     } catch (const std::overflow_error&) {
-      throw SolveError("a strategy's constraints admit no unique impulse (division by zero)");
+      SolveError e("a strategy's constraints admit no unique impulse (division by zero)");
+      e.strategy = k;
+      throw e;
+    } catch (SolveError& e) {
+      e.strategy = k;
+      throw;
     }
     a.results.push_back(std::move(r));
   }

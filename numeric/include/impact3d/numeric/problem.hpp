@@ -22,6 +22,7 @@ struct Problem {
   Vec3<Scalar> V_ri;  // contact axes
   Scalar restitution;
   Scalar kappa;       // 2-norm condition number of K
+  Scalar amplification = Scalar(1);  // of the inputs' rounding into the impulse (rounding.hpp)
 
   // A direction computed from a 3x3 solve is noise once its magnitude is below the solve's forward
   // error, about eps * kappa(K) * scale; 16 covers the few roundings of assembling the rows.

@@ -53,6 +53,9 @@ enum class WarningCode {
   plane_undefined,         // strategy plane has no direction; fallback used
   negative_ratio,          // an impulse ratio used is negative: contact-plane impulse pushes along sliding
   non_physical_limit,      // a critical/generalized ratio has no physical value (denominator <= 0)
+  not_finite,              // a result is NaN or infinite at this precision
+  rounding,                // the rounding bound exceeds the trusted fraction (rounding.hpp)
+  undecided,               // a regime decision lies within the rounding bound of its threshold
 };
 
 struct Warning {
@@ -60,9 +63,11 @@ struct Warning {
   std::string text;
 };
 
-// A strategy whose constraints admit no impulse (a singular constraint system).
+// A strategy whose constraints admit no impulse (a singular constraint system). `strategy` is the index
+// of the strategy in the analysis that failed, when one did.
 struct SolveError : std::runtime_error {
   using std::runtime_error::runtime_error;
+  std::optional<std::size_t> strategy;
 };
 
 // What an engine determines: the impulse and the ratios and limits that decided it.

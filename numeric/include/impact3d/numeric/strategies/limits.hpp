@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "impact3d/numeric/exact.hpp"
 #include "impact3d/numeric/problem.hpp"
+#include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/strategy.hpp"
 
 namespace impact3d::strategies {
@@ -53,6 +55,30 @@ void flag_if_not_finite(ImpulseSolution<Scalar>& out, const Scalar& value, const
   if (!is_finite(value))
     out.warnings.push_back({WarningCode::non_physical_limit,
                             name + " is undefined: the normal impulse of the solution that defines it is zero"});
+}
+
+// A regime decided by mu >= limit is undecided when mu lies within the limit's rounding bound
+// (rounding.hpp, with the quotient's factor): a wider precision could take the other branch. The impulse
+// is continuous across the threshold, so the warning says which decision is in doubt, not that the
+// numbers are.
+template <typename Scalar>
+void flag_if_undecided(ImpulseSolution<Scalar>& out, const Problem<Scalar>& p, const Scalar& mu, const Scalar& limit,
+                       const std::string& name) {
+  if constexpr (!is_exact_v<Scalar>) {
+    using std::abs;
+    using std::hypot;
+    if (!is_finite(limit)) return;
+    const Scalar quotient = Scalar(1) + hypot(p.V_ri.y(), p.V_ri.z()) / p.V_ri.x();
+    const Scalar bound = rounding::relative_bound(p.amplification) * quotient * (Scalar(1) + abs(limit));
+    if (abs(mu - limit) <= bound) {
+      std::ostringstream text;
+      text.precision(3);
+      text << "undecided: mu = " << static_cast<double>(mu) << " lies within the rounding bound ("
+           << static_cast<double>(bound) << ") of " << name << " = " << static_cast<double>(limit)
+           << "; a wider precision may take the other regime";
+      out.warnings.push_back({WarningCode::undecided, text.str()});
+    }
+  }
 }
 
 template <typename Scalar>

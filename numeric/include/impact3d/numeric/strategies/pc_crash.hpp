@@ -24,6 +24,7 @@ ImpulseSolution<Scalar> pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>
   out.gir = gir;
   out.cir = Engine::plane_ratio(p, ax, p.restitution, "pc-crash CIR (eq 19)");
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
+  flag_if_undecided(out, p, spec.mu, gir, "GIR (eq 14)");
   if (spec.mu >= gir) {
     out.regime = Regime::full;
     out.mu = gir;

@@ -18,6 +18,7 @@ ImpulseSolution<Scalar> wach(const Problem<Scalar>& p, const Wach<Scalar>& spec)
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
   flag_if_not_finite(out, *out.gir, "GIR (eq 20)");
   const Scalar limit = spec.limit == WachLimit::cir ? *out.cir : *out.gir;
+  flag_if_undecided(out, p, spec.mu, limit, spec.limit == WachLimit::cir ? "CIR (eq 19)" : "GIR (eq 20)");
   const bool capped = spec.mu >= limit;
   out.regime = capped ? Regime::capped : Regime::sliding;
   out.mu = capped ? limit : spec.mu;

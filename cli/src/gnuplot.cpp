@@ -1,0 +1,152 @@
+#include "gnuplot.hpp"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "impact3d/case/escape.hpp"
+#include "user_error.hpp"
+
+extern char** environ;
+
+namespace impact3d::cli {
+namespace {
+
+constexpr std::size_t kMessageBytes = 1 << 16;  // gnuplot's messages kept; the rest is read and dropped
+
+std::string first_line(const std::string& text) {
+  std::size_t begin = text.find_first_not_of(" \n\r\t");
+  if (begin == std::string::npos) return "";
+  const std::size_t end = text.find('\n', begin);
+  std::string line = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+  if (line.size() > 200) line = line.substr(0, 200) + "...";
+  return io::printable(line);
+}
+
+// Starts gnuplot with `args`, stdout to `out_fd`, stderr to `err_fd`, in `dir_fd` when >= 0. Returns
+// the pid, or -1 with errno set when gnuplot cannot be started.
+pid_t spawn(const std::vector<std::string>& args, int out_fd, int err_fd, int dir_fd) {
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&fa, out_fd, 1);
+  posix_spawn_file_actions_adddup2(&fa, err_fd, 2);
+  if (dir_fd >= 0) posix_spawn_file_actions_addfchdir_np(&fa, dir_fd);
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  const int rc = posix_spawnp(&pid, "gnuplot", &fa, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&fa);
+  if (rc != 0) {
+    errno = rc;
+    return -1;
+  }
+  return pid;
+}
+
+int wait_for(pid_t pid) {
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+[[noreturn]] void not_found() {
+  throw UserError("gnuplot not found: install it (Debian: apt-get install gnuplot-nox) or put it on PATH");
+}
+
+}  // namespace
+
+OutputDir::OutputDir(const std::string& path) : path_(path) {
+  std::error_code ec;
+  std::filesystem::create_directories(path, ec);
+  fd_ = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd_ < 0) throw UserError(fmt::format("{}: cannot use as the output directory ({})", path, std::strerror(errno)));
+}
+
+OutputDir::~OutputDir() { ::close(fd_); }
+
+int OutputDir::create(const std::string& name) const {
+  // Whatever stands under that name, a planted link included, is removed, never followed: the new file
+  // is created exclusively.
+  if (::unlinkat(fd_, name.c_str(), 0) != 0 && errno != ENOENT)
+    throw UserError(fmt::format("{}/{}: cannot replace ({})", path_, name, std::strerror(errno)));
+  const int fd = ::openat(fd_, name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  if (fd < 0) throw UserError(fmt::format("{}/{}: cannot create ({})", path_, name, std::strerror(errno)));
+  return fd;
+}
+
+void OutputDir::write(const std::string& name, std::string_view text) const {
+  const int fd = create(name);
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = errno;
+      ::close(fd);
+      throw UserError(fmt::format("{}/{}: cannot write ({})", path_, name, std::strerror(err)));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+}
+
+std::string gnuplot_string(std::string_view text) {
+  std::string out = "'";
+  for (char c : io::printable(text)) {
+    if (c == '\'') out += '\'';
+    out += c;
+  }
+  return out + "'";
+}
+
+void require_gnuplot() {
+  const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  const pid_t pid = spawn({"gnuplot", "--version"}, null, null, -1);
+  ::close(null);
+  if (pid < 0 || wait_for(pid) != 0) not_found();
+}
+
+std::string run_gnuplot(const OutputDir& dir, const std::string& script, const std::string& image) {
+  const int image_fd = dir.create(image);
+  int err[2];
+  if (::pipe2(err, O_CLOEXEC) != 0) {
+    ::close(image_fd);
+    throw UserError(fmt::format("cannot run gnuplot ({})", std::strerror(errno)));
+  }
+  const pid_t pid = spawn({"gnuplot", script}, image_fd, err[1], dir.fd());
+  const int spawn_errno = errno;
+  ::close(image_fd);
+  ::close(err[1]);
+  if (pid < 0) {
+    ::close(err[0]);
+    if (spawn_errno == ENOENT) not_found();
+    throw UserError(fmt::format("cannot run gnuplot ({})", std::strerror(spawn_errno)));
+  }
+  std::string messages;
+  char buf[4096];
+  for (;;) {
+    const ssize_t n = ::read(err[0], buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    if (messages.size() < kMessageBytes) messages.append(buf, static_cast<std::size_t>(n));
+  }
+  ::close(err[0]);
+  const int status = wait_for(pid);
+  if (status != 0)
+    throw UserError(fmt::format("gnuplot failed on {} (exit status {}): {}", script, status, first_line(messages)));
+  return first_line(messages);
+}
+
+}  // namespace impact3d::cli

@@ -1,0 +1,59 @@
+// Whether a solution's precision can deliver it: a NaN or an infinity, or a rounding bound beyond the
+// trusted fraction (rounding.hpp), becomes a warning naming the quantity and the precision that
+// resolves it, so that no result is printed as if fine when it is not.
+#pragma once
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "impact3d/numeric/post_impact.hpp"
+#include "impact3d/numeric/rounding.hpp"
+
+namespace impact3d {
+
+template <typename Scalar>
+bool solution_finite(const Solution<Scalar>& s) {
+  const auto& i = s.impulse;
+  for (const auto* o : {&i.mu, &i.mu_t, &i.mu_z, &i.plane_angle_deg, &s.swerve_deg, &s.swerve_speed})
+    if (*o && !is_finite(**o)) return false;
+  bool ok = all_finite(i.P_C) && all_finite(s.P_W) && all_finite(s.V_rf) && is_finite(s.sliding_after) &&
+            is_finite(s.restitution_effective) && is_finite(s.energy_before) && is_finite(s.energy_after) &&
+            is_finite(s.energy_loss);
+  for (int k = 0; k < 2; ++k)
+    ok = ok && all_finite(s.after[k].v_W) && all_finite(s.after[k].w_B) && is_finite(s.change[k].dv) &&
+         (!s.change[k].pdof_deg || is_finite(*s.change[k].pdof_deg));
+  return ok;
+}
+
+// `amplification`: the problem's (rounding.hpp). Ratios carry their quotient's factor 1 + |V_cp / V_n|
+// besides, so the check uses the larger of the two.
+template <typename Scalar>
+void flag_precision(Solution<Scalar>& s, const Scalar& amplification) {
+  if constexpr (!is_exact_v<Scalar>) {
+    if (!solution_finite(s))
+      s.warnings.push_back({WarningCode::not_finite,
+                            "not finite: a result is NaN or infinite at this precision (printed as null in JSON); "
+                            "it cannot be trusted"});
+    using std::hypot;
+    const Scalar quotient = Scalar(1) + hypot(s.V_ri.y(), s.V_ri.z()) / s.V_ri.x();
+    const double a = static_cast<double>(Scalar(amplification * quotient));
+    const double bound = rounding::kResultRoundings * static_cast<double>(std::numeric_limits<Scalar>::epsilon()) * a;
+    if (bound <= rounding::kTrustedFraction) return;
+    std::ostringstream text;
+    text.precision(2);
+    text << "rounding: the impulse, its ratios and everything computed from them may be off by up to " << bound
+         << " of their size at this precision (32 eps kappa(K) cond(J) (|v_IC1|+|v_IC2|)/V_rn (1+|V_cp/V_n|) = " << a
+         << "), beyond the trusted " << rounding::kTrustedFraction << "; ";
+    const std::string wider = rounding::precision_for(a);
+    if (!std::isfinite(a))
+      text << "K or an inertia tensor is not positive definite at this precision: solve with --precision 100";
+    else if (wider.empty())
+      text << "no precision of impact3d resolves it";
+    else
+      text << "--precision " << wider << " resolves it";
+    s.warnings.push_back({WarningCode::rounding, text.str()});
+  }
+}
+
+}  // namespace impact3d

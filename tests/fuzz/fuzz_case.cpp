@@ -1,0 +1,41 @@
+// libFuzzer harness: any bytes as a case file, read and, when valid, solved at every precision and
+// written as the result document; the reader must reject or the solve must finish, never crash or hang.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "impact3d/case/read_case.hpp"
+#include "impact3d/numeric/multiprecision.hpp"
+
+namespace {
+
+template <typename Scalar>
+void solve_at(const impact3d::io::CaseSpec& spec, impact3d::Engine engine) {
+  using namespace impact3d;
+  try {
+    const auto a = analyze(io::to_scene<Scalar>(spec), io::to_strategies<Scalar>(spec), engine);
+    (void)io::result_json(spec, a, "fuzz");
+  } catch (const io::CaseError&) {
+  } catch (const SolveError&) {
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace impact3d;
+  io::CaseSpec spec;
+  try {
+    spec = io::read_case(std::string(reinterpret_cast<const char*>(data), size));
+  } catch (const io::CaseError&) {
+    return 0;
+  }
+  for (Engine engine : {Engine::generated, Engine::direct}) {
+    solve_at<double>(spec, engine);
+    solve_at<long double>(spec, engine);
+  }
+  solve_at<mp::float128>(spec, Engine::generated);
+  solve_at<mp::float50>(spec, Engine::generated);
+  solve_at<mp::float100>(spec, Engine::direct);
+  return 0;
+}

@@ -1,0 +1,32 @@
+// The compare harnesses: the fuzzed bytes become the other tool's results file, compared against a
+// reference result of the suite; bad input must be one CaseError, never a crash or a leak of memory.
+#pragma once
+
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "../../cli/src/compare.hpp"
+#include "../../cli/src/user_error.hpp"
+#include "impact3d/case/case_spec.hpp"
+
+inline int fuzz_compare(const std::uint8_t* data, std::size_t size, const char* extension) {
+  static const bool quiet = std::freopen("/dev/null", "w", stdout) != nullptr;  // compare prints its table
+  (void)quiet;
+  const std::string path = "/tmp/impact3d-fuzz-" + std::to_string(::getpid()) + extension;
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  try {
+    impact3d::cli::CompareOptions o;
+    (void)impact3d::cli::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
+    o.subset = true;
+    (void)impact3d::cli::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
+  } catch (const impact3d::io::CaseError&) {
+  } catch (const impact3d::cli::UserError&) {
+  }
+  std::remove(path.c_str());
+  return 0;
+}

@@ -1,0 +1,16 @@
+// libFuzzer harness: any bytes as a --strategy option ("wach:mu=0.4,limit=gir" or a JSON object).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "impact3d/case/read_case.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  try {
+    const auto s = impact3d::io::read_strategy_option(std::string(reinterpret_cast<const char*>(data), size), 0);
+    (void)impact3d::io::to_strategy<double>(s);
+    (void)impact3d::io::strategy_label(s);
+  } catch (const impact3d::io::CaseError&) {
+  }
+  return 0;
+}
