@@ -168,3 +168,15 @@ TEST_CASE("extreme cases: no NaN or infinity without a warning, text and JSON ag
   CHECK(solved + rejected == 60);
   CHECK(solved >= 20);
 }
+
+TEST_CASE("verify with nothing to verify fails instead of passing", "[bad-input]") {
+  const fs::path empty = fs::temp_directory_path() / fmt::format("impact3d-empty-{}", ::getpid());
+  fs::create_directories(empty);
+  for (const auto& args : std::vector<std::vector<std::string>>{{"verify"}, {"verify", empty.string()}}) {
+    const Run r = run_argv(args);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err == "impact3d: error: verify: no cases to verify: name case files or directories holding them, or --random N\n");
+  }
+  fs::remove_all(empty);
+}
