@@ -180,3 +180,29 @@ TEST_CASE("verify with nothing to verify fails instead of passing", "[bad-input]
   }
   fs::remove_all(empty);
 }
+
+// K = [[2, -1, 0], [-1, 2, 0], [0, 0, 3]] exactly (hand derivation: unit masses and inertias, lever arms
+// (1, 1, 0), m' = 1/2), so Brach with mu_t = 2, mu_z = 0 makes the restitution row a1 + b1 mu_t = 0: that
+// strategy alone has no impulse, at every precision and in both engines.
+TEST_CASE("a strategy with no solution is named by its path", "[bad-input]") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-singular-{}", ::getpid());
+  fs::create_directories(dir);
+  std::ofstream(dir / "case.json") << R"({"vehicles": [
+    {"mass": 1, "inertia": {"Ixx": 1, "Iyy": 1, "Izz": 1}, "velocity": [1, 0, 0], "impulse_center": [1, 1, 0]},
+    {"mass": 1, "inertia": {"Ixx": 1, "Iyy": 1, "Izz": 1}, "orientation_deg": {"yaw": 180}, "velocity": [-1, 0, 0],
+     "impulse_center": [1, 1, 0]}],
+    "contact": {"normal_yaw_deg": 180}, "restitution": 0.5,
+    "strategy": [{"name": "pc-crash", "mu": 0.4}, {"name": "brach", "mu_t": 2, "mu_z": 0}]})";
+  int runs = 0;
+  for (const char* precision : {"double", "long-double", "float128", "50", "100", "exact"})
+    for (const char* engine : {"generated", "direct"}) {
+      const Run r = run_argv({"solve", "case.json", "--precision", precision, "--engine", engine}, dir.string());
+      INFO(precision << " " << engine << ": " << r.err);
+      CHECK(r.status == 1);
+      CHECK(r.out.empty());
+      CHECK(r.err.rfind("impact3d: error: case.json: $.strategy[1]: no solution: ", 0) == 0);
+      ++runs;
+    }
+  CHECK(runs == 12);
+  fs::remove_all(dir);
+}

@@ -138,6 +138,7 @@ std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   each("kinetic energy before" + U("energy"), [&](const auto& s) { return p.num(s.energy_before, f.energy); });
   each("kinetic energy after" + U("energy"), [&](const auto& s) { return p.num(s.energy_after, f.energy); });
   each("kinetic energy lost" + U("energy"), [&](const auto& s) { return p.num(s.energy_loss, f.energy); });
+  each("rounding bound of the impulse, relative", [&](const auto& s) { return io::scalar_to_text(s.rounding_bound, 2); });
   out += t.str();
 
   std::string warnings;

@@ -110,6 +110,7 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   w.key("after").raw(p.num(s.energy_after, f.energy));
   w.key("loss").raw(p.num(s.energy_loss, f.energy));
   w.end_object();
+  w.key("rounding_bound").raw(scalar_to_text(s.rounding_bound, 3));
   w.key("warnings").begin_array();
   for (const auto& warning : s.warnings) w.string(warning.text);
   w.end_array();

@@ -93,6 +93,9 @@ struct Solution {
   AxisChange t_change, z_change;
   std::string volume;                          // paper Figure 2: A-D, or the plane the solution lies on
   Scalar energy_before, energy_after, energy_loss;
+  // Relative rounding bound of the impulse and its ratios at this precision (rounding.hpp); 0 in exact
+  // arithmetic, infinite where K or J is not positive definite at this precision.
+  Scalar rounding_bound = Scalar(0);
   std::vector<Warning> warnings;
 };
 

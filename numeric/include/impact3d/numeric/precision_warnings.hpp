@@ -37,8 +37,9 @@ void flag_precision(Solution<Scalar>& s, const Scalar& amplification) {
                             "it cannot be trusted"});
     using std::hypot;
     const Scalar quotient = Scalar(1) + hypot(s.V_ri.y(), s.V_ri.z()) / s.V_ri.x();
+    s.rounding_bound = rounding::relative_bound(Scalar(amplification * quotient));
     const double a = static_cast<double>(Scalar(amplification * quotient));
-    const double bound = rounding::kResultRoundings * static_cast<double>(std::numeric_limits<Scalar>::epsilon()) * a;
+    const double bound = static_cast<double>(s.rounding_bound);
     if (bound <= rounding::kTrustedFraction) return;
     std::ostringstream text;
     text.precision(2);
