@@ -118,7 +118,6 @@ TEST_CASE("the issue's tensor: every precision short of 50 digits flags it or re
        "velocity": [11.176, 0, 0], "impulse_center": [2.60, 0.20, -0.15]}],
     "contact": {"normal_yaw_deg": 0}, "restitution": 0.1, "strategy": {"name": "pc-crash", "mu": 0.4}})";
   const io::CaseSpec spec = io::read_case(text);
-  int checked = 0;
   for (Engine engine : {Engine::generated, Engine::direct}) {
     try {
       const auto a = analyze(io::to_scene<double>(spec), io::to_strategies<double>(spec), engine);
@@ -129,7 +128,5 @@ TEST_CASE("the issue's tensor: every precision short of 50 digits flags it or re
     CHECK(has(ld.solutions[0].warnings, WarningCode::rounding));
     const auto wide = analyze(io::to_scene<mp::float100>(spec), io::to_strategies<mp::float100>(spec), engine);
     CHECK(wide.solutions[0].warnings.empty());
-    checked += 2;
   }
-  CHECK(checked == 4);
 }

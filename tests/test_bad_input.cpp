@@ -44,12 +44,12 @@ TEST_CASE("every malformed case is rejected with one line naming the field", "[b
     INFO(name);
     REQUIRE(expected.count(name) == 1);
     const std::vector<std::vector<std::string>> runs = {{"--format", "text"}, {"--format", "json"}, {"--precision", "long-double"},
-                                                        {"--precision", "50"}, {"--precision", "100"}, {"--precision", "exact"}};
+                                                        {"--precision", "float128"}, {"--precision", "50"}, {"--precision", "100"}, {"--precision", "exact"}};
     for (const auto& extra : runs) {
       std::vector<std::string> args{"solve", entry.path().string()};
       args.insert(args.end(), extra.begin(), extra.end());
-      // 10 s of CPU and 1 GiB: a few milliseconds and megabytes are what a rejection takes.
-      const Run r = run_argv(args, "", 10, 1024);
+      // 10 s of CPU and 256 MiB of address space: a rejection takes milliseconds and a few megabytes.
+      const Run r = run_argv(args, "", 10, 256);
       INFO(extra[0] << " " << extra[1]);
       CHECK(r.status == 1);
       CHECK(r.out.empty());
@@ -82,7 +82,10 @@ TEST_CASE("command-line usage errors: exit 2 and one line", "[bad-input]") {
                                                                 {"solve", fig8, "--format", "xml\n\x1b[2J"},
                                                                 {"solve"},
                                                                 {"frobnicate"},
-                                                                {"compare", fig8}}) {
+                                                                {"compare", fig8},
+                                                                {"compare", fig8, fig8, "--atol", "inf"},
+                                                                {"compare", fig8, fig8, "--rtol", "-1"},
+                                                                {"verify", "--random", "1000000000"}}) {
     const Run r = run_argv(args);
     INFO(args.back());
     CHECK(r.status == 2);
@@ -204,5 +207,13 @@ TEST_CASE("a strategy with no solution is named by its path", "[bad-input]") {
       ++runs;
     }
   CHECK(runs == 12);
+  // plot and verify name it the same way, with the file.
+  for (const auto& args : std::vector<std::vector<std::string>>{{"plot", "case.json", "-o", "figs"}, {"verify", "case.json"}}) {
+    const Run r = run_argv(args, dir.string());
+    INFO(args[0] << ": " << r.err);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err.rfind("impact3d: error: case.json: $.strategy[1]: no solution: ", 0) == 0);
+  }
   fs::remove_all(dir);
 }

@@ -112,7 +112,6 @@ TEST_CASE("a case name is drawn as text, never run by gnuplot", "[plot][hostile]
   fs::create_directories(dir);
   const std::vector<std::string> names = {"x `touch pwned1` y", "Fig 8\n!touch pwned2\n#", "a' . system('touch pwned3') . 'b",
                                           "t\nset print 'pwned4'\nprint 1", "m @x `touch pwned5`"};
-  int plotted = 0;
   for (const auto& name : names) {
     doc["name"] = name;
     std::ofstream(dir / "case.json") << doc.dump();
@@ -120,9 +119,7 @@ TEST_CASE("a case name is drawn as text, never run by gnuplot", "[plot][hostile]
     INFO(name << "\n" << r.err);
     CHECK(r.status == 0);
     CHECK(r.err.empty());
-    ++plotted;
   }
-  CHECK(plotted == 5);
   for (const char* f : {"pwned1", "pwned2", "pwned3", "pwned4", "pwned5"}) {
     CHECK(!fs::exists(dir / f));
     CHECK(!fs::exists(dir / "figs" / f));

@@ -139,7 +139,7 @@ const json* find(const json& root, const std::vector<std::string>& parts) {
 }
 
 json read_json(const std::string& file) {
-  return io::parse_json_bounded(io::read_text_file(file, io::limits::kResultFileBytes), file + ": $");
+  return io::parse_json_bounded(io::read_text_file(file, io::limits::kResultFileBytes), file + ": $", io::limits::kResultDepth);
 }
 
 RefCase load_reference(const std::string& name, const std::string& file) {

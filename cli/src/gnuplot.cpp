@@ -6,7 +6,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -23,13 +25,49 @@ namespace {
 
 constexpr std::size_t kMessageBytes = 1 << 16;  // gnuplot's messages kept; the rest is read and dropped
 
-std::string first_line(const std::string& text) {
-  std::size_t begin = text.find_first_not_of(" \n\r\t");
-  if (begin == std::string::npos) return "";
-  const std::size_t end = text.find('\n', begin);
-  std::string line = text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
-  if (line.size() > 200) line = line.substr(0, 200) + "...";
-  return io::printable(line);
+// The line of gnuplot's messages that says what went wrong: gnuplot echoes the script line and a caret
+// before `"NAME.gp" line N: ...`, so the last line naming a script line, else the last non-blank one.
+std::string summary_line(const std::string& text) {
+  std::vector<std::string> lines;
+  for (std::size_t pos = 0; pos < text.size();) {
+    const std::size_t end = std::min(text.find('\n', pos), text.size());
+    std::string line = text.substr(pos, end - pos);
+    if (line.find_first_not_of(" \r\t^") != std::string::npos) lines.push_back(line);
+    pos = end + 1;
+  }
+  if (lines.empty()) return "";
+  std::string pick = lines.back();
+  for (const auto& l : lines)
+    if (l.find(" line ") != std::string::npos && l.find(": ") != std::string::npos) pick = l;
+  const auto begin = pick.find_first_not_of(" \t");
+  pick = pick.substr(begin);
+  if (pick.size() > 200) pick = pick.substr(0, 200) + "...";
+  return io::printable(pick);
+}
+
+// Descriptors 0-2 may be closed when impact3d starts; those it hands to gnuplot are moved above them
+// so that redirecting gnuplot's standard streams never replaces one of them.
+int above_std(int fd) {
+  if (fd < 0 || fd > 2) return fd;
+  const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
+  ::close(fd);
+  return moved;
+}
+
+// gnuplot's absolute path from PATH, skipping empty and relative entries: those name the working
+// directory, which for gnuplot is the output directory, where anyone may have left a `gnuplot`.
+std::string gnuplot_path() {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/local/bin:/usr/bin:/bin";
+  for (std::size_t pos = 0; pos <= dirs.size();) {
+    const std::size_t end = std::min(dirs.find(':', pos), dirs.size());
+    const std::string dir = dirs.substr(pos, end - pos);
+    pos = end + 1;
+    if (dir.empty() || dir[0] != '/') continue;
+    const std::string candidate = dir + "/gnuplot";
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return "";
 }
 
 // Starts gnuplot with `args`, stdout to `out_fd`, stderr to `err_fd`, in `dir_fd` when >= 0. Returns
@@ -45,7 +83,13 @@ pid_t spawn(const std::vector<std::string>& args, int out_fd, int err_fd, int di
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   pid_t pid = -1;
-  const int rc = posix_spawnp(&pid, "gnuplot", &fa, nullptr, argv.data(), environ);
+  const std::string program = gnuplot_path();
+  if (program.empty()) {
+    posix_spawn_file_actions_destroy(&fa);
+    errno = ENOENT;
+    return -1;
+  }
+  const int rc = posix_spawn(&pid, program.c_str(), &fa, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
   if (rc != 0) {
     errno = rc;
@@ -56,7 +100,9 @@ pid_t spawn(const std::vector<std::string>& args, int out_fd, int err_fd, int di
 
 int wait_for(pid_t pid) {
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  for (;;) {
+    if (::waitpid(pid, &status, 0) >= 0) break;
+    if (errno != EINTR) return -1;
   }
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
@@ -70,7 +116,7 @@ int wait_for(pid_t pid) {
 OutputDir::OutputDir(const std::string& path) : path_(path) {
   std::error_code ec;
   std::filesystem::create_directories(path, ec);
-  fd_ = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  fd_ = above_std(::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
   if (fd_ < 0) throw UserError(fmt::format("{}: cannot use as the output directory ({})", path, std::strerror(errno)));
 }
 
@@ -81,7 +127,7 @@ int OutputDir::create(const std::string& name) const {
   // is created exclusively.
   if (::unlinkat(fd_, name.c_str(), 0) != 0 && errno != ENOENT)
     throw UserError(fmt::format("{}/{}: cannot replace ({})", path_, name, std::strerror(errno)));
-  const int fd = ::openat(fd_, name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+  const int fd = above_std(::openat(fd_, name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644));
   if (fd < 0) throw UserError(fmt::format("{}/{}: cannot create ({})", path_, name, std::strerror(errno)));
   return fd;
 }
@@ -112,7 +158,7 @@ std::string gnuplot_string(std::string_view text) {
 }
 
 void require_gnuplot() {
-  const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+  const int null = above_std(::open("/dev/null", O_WRONLY | O_CLOEXEC));
   const pid_t pid = spawn({"gnuplot", "--version"}, null, null, -1);
   ::close(null);
   if (pid < 0 || wait_for(pid) != 0) not_found();
@@ -125,6 +171,8 @@ std::string run_gnuplot(const OutputDir& dir, const std::string& script, const s
     ::close(image_fd);
     throw UserError(fmt::format("cannot run gnuplot ({})", std::strerror(errno)));
   }
+  err[0] = above_std(err[0]);
+  err[1] = above_std(err[1]);
   const pid_t pid = spawn({"gnuplot", script}, image_fd, err[1], dir.fd());
   const int spawn_errno = errno;
   ::close(image_fd);
@@ -145,8 +193,8 @@ std::string run_gnuplot(const OutputDir& dir, const std::string& script, const s
   ::close(err[0]);
   const int status = wait_for(pid);
   if (status != 0)
-    throw UserError(fmt::format("gnuplot failed on {} (exit status {}): {}", script, status, first_line(messages)));
-  return first_line(messages);
+    throw UserError(fmt::format("gnuplot failed on {} (exit status {}): {}", script, status, summary_line(messages)));
+  return summary_line(messages);
 }
 
 }  // namespace impact3d::cli

@@ -33,7 +33,7 @@ bool identifier(std::string_view key) {
 // the nesting, so the cost stays linear in the input.
 class LiteralCollector : public nlohmann::json_sax<json> {
  public:
-  LiteralCollector(const std::string& root, bool keep) : root_(root), keep_(keep), path_(root) {}
+  LiteralCollector(const std::string& root, bool keep, int depth) : root_(root), keep_(keep), depth_(depth), path_(root) {}
 
   std::map<std::string, std::string> literal;
 
@@ -74,6 +74,7 @@ class LiteralCollector : public nlohmann::json_sax<json> {
   };
   std::string root_;
   bool keep_;
+  int depth_;
   std::vector<Frame> frames_;
   std::string path_;  // the innermost open container (the root's name outside every container)
   std::size_t values_ = 0;
@@ -107,13 +108,13 @@ class LiteralCollector : public nlohmann::json_sax<json> {
     const long e = written_exponent(text);
     if (e > limits::kExponent || e < -limits::kExponent)
       throw CaseError(child(), fmt::format("the exponent of {} is beyond +-{}", printable(text.substr(0, 40)), limits::kExponent));
-    if (keep_ && !ignored()) literal[child()] = text;
+    if (keep_ && !ignored() && frames_.size() <= static_cast<std::size_t>(limits::kLiteralDepth)) literal[child()] = text;
     return advance();
   }
   bool open(bool object) {
     count();
-    if (frames_.size() >= static_cast<std::size_t>(limits::kDepth))
-      throw CaseError(child(), fmt::format("nested deeper than {} levels", limits::kDepth));
+    if (frames_.size() >= static_cast<std::size_t>(depth_))
+      throw CaseError(child(), fmt::format("nested deeper than {} levels", depth_));
     const bool skip = ignored();
     const std::size_t length = path_.size();
     path_ = child();
@@ -127,12 +128,12 @@ class LiteralCollector : public nlohmann::json_sax<json> {
   }
 };
 
-ParsedJson parse(std::string_view text, const std::string& root, bool keep) {
+ParsedJson parse(std::string_view text, const std::string& root, bool keep, int depth) {
   if (const auto nul = text.find('\0'); nul != std::string_view::npos)
     throw CaseError(root, fmt::format("invalid JSON: a NUL byte at offset {}", nul));
   // The collector reads first: it enforces the limits and reports errors with the path where they stand.
   ParsedJson out;
-  LiteralCollector collector(root, keep);
+  LiteralCollector collector(root, keep, depth);
   json::sax_parse(text.begin(), text.end(), &collector);
   out.literal = std::move(collector.literal);
   out.doc = json::parse(text.begin(), text.end());
@@ -149,8 +150,12 @@ std::string element_path(const std::string& parent, std::size_t index) {
   return parent + "[" + std::to_string(index) + "]";
 }
 
-ParsedJson parse_json_with_literals(std::string_view text, const std::string& root) { return parse(text, root, true); }
+ParsedJson parse_json_with_literals(std::string_view text, const std::string& root) {
+  return parse(text, root, true, limits::kDepth);
+}
 
-nlohmann::json parse_json_bounded(std::string_view text, const std::string& root) { return parse(text, root, false).doc; }
+nlohmann::json parse_json_bounded(std::string_view text, const std::string& root, int depth) {
+  return parse(text, root, false, depth).doc;
+}
 
 }  // namespace impact3d::io

@@ -2,6 +2,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 
 #include "impact3d/case/escape.hpp"
@@ -46,29 +48,38 @@ int guarded(const std::string& file, F&& body) {
   }
 }
 
-// The strategies of the case or the command line; a strategy with no solution is named by its path.
+// `body(spec)`, with a strategy that has no solution named by its path in the case ($.strategy[2]).
+template <typename F>
+auto naming_strategies(const impact3d::io::CaseSpec& spec, F&& body) {
+  try {
+    return body();
+  } catch (const impact3d::SolveError& e) {
+    const std::string where = e.strategy && *e.strategy < spec.strategies.size() ? spec.strategies[*e.strategy].path : "$";
+    throw impact3d::io::CaseError(where, std::string("no solution: ") + e.what());
+  }
+}
+
+// The strategies of the case or the command line.
 int solve(const std::string& case_path, const std::vector<std::string>& strategies, const std::string& precision,
           const impact3d::cli::RenderOptions& options) {
   using namespace impact3d;
   return guarded(case_path, [&] {
     io::CaseSpec spec = io::read_case(io::read_text_file(case_path));
+    if (strategies.size() > io::limits::kStrategies)
+      throw io::CaseError("--strategy", fmt::format("more than {} strategies", io::limits::kStrategies));
     if (!strategies.empty()) {
       spec.strategies.clear();
       for (std::size_t i = 0; i < strategies.size(); ++i)
         spec.strategies.push_back(io::read_strategy_option(strategies[i], static_cast<int>(i)));
     }
-    std::string output;
-    try {
-      if (precision == "double") output = cli::render_double(spec, options);
-      else if (precision == "long-double") output = cli::render_long_double(spec, options);
-      else if (precision == "float128") output = cli::render_float128(spec, options);
-      else if (precision == "50") output = cli::render_float50(spec, options);
-      else if (precision == "100") output = cli::render_float100(spec, options);
-      else output = cli::render_exact(spec, options);
-    } catch (const SolveError& e) {
-      const std::string where = e.strategy && *e.strategy < spec.strategies.size() ? spec.strategies[*e.strategy].path : "$";
-      throw io::CaseError(where, std::string("no solution: ") + e.what());
-    }
+    const std::string output = naming_strategies(spec, [&] {
+      if (precision == "double") return cli::render_double(spec, options);
+      if (precision == "long-double") return cli::render_long_double(spec, options);
+      if (precision == "float128") return cli::render_float128(spec, options);
+      if (precision == "50") return cli::render_float50(spec, options);
+      if (precision == "100") return cli::render_float100(spec, options);
+      return cli::render_exact(spec, options);
+    });
     std::fwrite(output.data(), 1, output.size(), stdout);
     return 0;
   });
@@ -105,14 +116,17 @@ int main(int argc, char** argv) {
   impact3d::cli::CompareOptions copt;
   compare_cmd->add_option("reference", reference, "reference result (JSON file) or directory (verification/reference)")->required();
   compare_cmd->add_option("other", other, "the other tool's results: JSON file, directory of JSON files, or CSV")->required();
-  compare_cmd->add_option("--rtol", copt.rtol, "relative tolerance (default 1e-9)");
-  compare_cmd->add_option("--atol", copt.atol, "absolute tolerance in the case's units (default 1e-9)");
+  // A tolerance that admits everything (inf) or nothing (< 0) is a usage error, not a verdict.
+  compare_cmd->add_option("--rtol", copt.rtol, "relative tolerance (default 1e-9)")->check(CLI::Range(0.0, 1e300));
+  compare_cmd->add_option("--atol", copt.atol, "absolute tolerance in the case's units (default 1e-9)")
+      ->check(CLI::Range(0.0, 1e300));
   compare_cmd->add_flag("--all", copt.all_fields, "also require the reference's fields beyond the contract");
   compare_cmd->add_flag("--subset", copt.subset, "compare only what the other results contain (cases, results, fields); reported as a subset");
   auto* verify_cmd = app.add_subcommand("verify", "every engine at every precision against the 100-digit solve");
   impact3d::verification::VerifyOptions vopt;
   verify_cmd->add_option("inputs", vopt.inputs, "case files or directories (e.g. examples verification/cases)");
-  verify_cmd->add_option("--random", vopt.random, "add this many seeded random collisions");
+  verify_cmd->add_option("--random", vopt.random, "add this many seeded random collisions (at most 100000)")
+      ->check(CLI::Range(0, 100000));
   verify_cmd->add_option("--seed", vopt.seed, "seed of the random collisions (default 1)");
   auto* plot_cmd = app.add_subcommand("plot", "draw the impulse-space figures and sweeps of a case (gnuplot)");
   std::string plot_case;
@@ -135,7 +149,7 @@ int main(int argc, char** argv) {
   if (plot_cmd->parsed())
     return guarded(plot_case, [&] {
       const auto spec = impact3d::io::read_case(impact3d::io::read_text_file(plot_case));
-      const std::string written = impact3d::cli::plot(spec, popt);
+      const std::string written = naming_strategies(spec, [&] { return impact3d::cli::plot(spec, popt); });
       std::fputs(written.c_str(), stdout);
       return 0;
     });

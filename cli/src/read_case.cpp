@@ -17,7 +17,9 @@
 #include "impact3d/case/escape.hpp"
 #include "impact3d/case/json_literals.hpp"
 #include "impact3d/case/limits.hpp"
+#include "impact3d/case/scalar_text.hpp"
 #include "impact3d/case/strategy_option.hpp"
+#include "impact3d/numeric/exact.hpp"
 
 namespace impact3d::io {
 namespace {
@@ -137,6 +139,15 @@ class Reader {
           fail(ptr, fmt::format("not symmetric: [{}][{}] = {} but [{}][{}] = {}", i, j, veh.inertia[i][j].text, j, i,
                                 veh.inertia[j][i].text));
     }
+    // Positive definite as written (Sylvester: the leading minors), so that every precision computes with
+    // the same admissible tensor; a precision that rounds it to an indefinite one flags its results.
+    rational J[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) J[i][j] = scalar_from_text<rational>(veh.inertia[i][j].text);
+    const rational minor2 = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+    const rational det = J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                         J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+    if (!(minor2 > 0) || !(det > 0)) fail(ptr, "not positive definite");
   }
 
   VehicleSpec vehicle(const json& v, const std::string& ptr) const {
@@ -257,6 +268,7 @@ class Reader {
     const json& st = required(root, "$", "strategy");
     if (st.is_array()) {
       if (st.empty()) fail("$.strategy", "empty array: give at least one strategy");
+      if (st.size() > limits::kStrategies) fail("$.strategy", fmt::format("more than {} strategies", limits::kStrategies));
       c.strategy_is_array = true;
       for (std::size_t i = 0; i < st.size(); ++i) c.strategies.push_back(strategy(st[i], element_path("$.strategy", i)));
     } else {

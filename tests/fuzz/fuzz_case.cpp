@@ -5,6 +5,7 @@
 #include <string>
 
 #include "impact3d/case/read_case.hpp"
+#include "impact3d/numeric/exact_analysis.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 
 namespace {
@@ -37,5 +38,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   solve_at<mp::float128>(spec, Engine::generated);
   solve_at<mp::float50>(spec, Engine::generated);
   solve_at<mp::float100>(spec, Engine::direct);
+  try {
+    (void)exact_analyze(io::to_scene<rational>(spec), io::to_strategies<rational>(spec));
+  } catch (const Irrational&) {
+  } catch (const io::CaseError&) {
+  } catch (const SolveError&) {
+  }
   return 0;
 }

@@ -1,5 +1,6 @@
 // The compare harnesses: the fuzzed bytes become the other tool's results file, compared against a
-// reference result of the suite; bad input must be one CaseError, never a crash or a leak of memory.
+// reference result of the suite, and then the reference itself; bad input must be one CaseError, never
+// a crash or a leak of memory.
 #pragma once
 
 #include <unistd.h>
@@ -24,6 +25,11 @@ inline int fuzz_compare(const std::uint8_t* data, std::size_t size, const char* 
     (void)impact3d::cli::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
     o.subset = true;
     (void)impact3d::cli::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
+  } catch (const impact3d::io::CaseError&) {
+  } catch (const impact3d::cli::UserError&) {
+  }
+  try {
+    (void)impact3d::cli::compare(path, IMPACT3D_FUZZ_REFERENCE, impact3d::cli::CompareOptions{});
   } catch (const impact3d::io::CaseError&) {
   } catch (const impact3d::cli::UserError&) {
   }

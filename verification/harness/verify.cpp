@@ -21,7 +21,19 @@ using F = mp::float100;
 struct Case {
   std::string name;
   io::CaseSpec spec;
+  std::string file;  // empty for the random cases
 };
+
+// A case's error, with its file named: the reference solve of a case can fail (not approaching, a
+// strategy with no impulse) as `solve` would, and says where.
+[[noreturn]] void rethrow_naming(const Case& c, const std::exception& e) {
+  std::string path = "$";
+  if (const auto* ce = dynamic_cast<const io::CaseError*>(&e)) path = ce->path;
+  if (const auto* se = dynamic_cast<const SolveError*>(&e); se && se->strategy && *se->strategy < c.spec.strategies.size())
+    path = c.spec.strategies[*se->strategy].path;
+  const std::string what = dynamic_cast<const SolveError*>(&e) ? std::string("no solution: ") + e.what() : e.what();
+  throw io::CaseError((c.file.empty() ? c.name : c.file) + ": " + path, what);
+}
 
 io::Number num(double v, const std::string& path = "") {
   return io::Number{fmt::format("{:.6g}", v), std::stod(fmt::format("{:.6g}", v)), path};
@@ -70,23 +82,25 @@ std::vector<Case> collect(const VerifyOptions& o) {
   std::vector<Case> cases;
   for (const auto& input : o.inputs) {
     std::vector<fs::path> files;
-    if (fs::is_directory(input)) {
-      for (const auto& e : fs::directory_iterator(input))
-        if (e.path().extension() == ".json") files.push_back(e.path());
+    std::error_code ec;
+    if (fs::is_directory(input, ec)) {
+      for (fs::directory_iterator it(input, ec), end; !ec && it != end; it.increment(ec))
+        if (it->path().extension() == ".json") files.push_back(it->path());
+      if (ec) throw io::CaseError(input, "cannot read the directory (" + ec.message() + ")");
       std::sort(files.begin(), files.end());
     } else {
       files.push_back(input);
     }
     for (const auto& f : files) {
       try {
-        cases.push_back({f.stem().string(), io::read_case(io::read_text_file(f.string()))});
+        cases.push_back({f.stem().string(), io::read_case(io::read_text_file(f.string())), f.string()});
       } catch (const io::CaseError& e) {
         throw e.path == f.string() ? e : io::CaseError(f.string() + ": " + e.path, e.what());  // name the file too
       }
     }
   }
   std::mt19937_64 g(o.seed);
-  for (int i = 0; i < o.random; ++i) cases.push_back({fmt::format("random-{}", i), random_case(g)});
+  for (int i = 0; i < o.random; ++i) cases.push_back({fmt::format("random-{}", i), random_case(g), ""});
   return cases;
 }
 
@@ -142,6 +156,7 @@ struct Quantities {
   std::map<std::string, Stat> stat;
   int decisions_differ = 0;
   int flagged = 0;  // results the precision itself flags as beyond its rounding (rounding.hpp)
+  int compared = 0;
   std::vector<std::string> decision_notes;
 };
 
@@ -201,6 +216,7 @@ void measure(const Case& c, const Analysis<F>& ref, double cond, Engine engine, 
       q.decision_notes.push_back(c.name + where + ": regime or warnings differ from the 100-digit solve");
       continue;
     }
+    ++q.compared;
     rec("impulse P", wide_norm(s.impulse.P_C, r.impulse.P_C), r.impulse.P_C.norm(), cond, where);
     // Post-impact relative velocity: a difference of velocities of the case's size.
     rec("V_rel after", wide_norm(s.V_rf, r.V_rf), r.V_ri.norm(), cond, where);
@@ -237,6 +253,11 @@ void run_precision(const std::string& name, const std::vector<Case>& cases, cons
                             quantity, s.max_eps, std::sqrt(s.sum_sq / s.n), s.max_units, s.min_digits, s.worst,
                             pass ? "" : "  BOUND EXCEEDED");
     }
+    if (q.compared == 0) {
+      ok = false;
+      report += fmt::format("{:<12} {:<10} FAILED: no result was compared (every one was flagged or differed)\n", name,
+                            engine_name(engine));
+    }
     if (q.flagged)
       report += fmt::format("{:<12} {:<10} {} results flagged by the precision itself as beyond its rounding (not held to the bound)\n",
                             name, engine_name(engine), q.flagged);
@@ -255,9 +276,15 @@ int verify(const VerifyOptions& o) {
   std::vector<Analysis<F>> refs;
   std::vector<double> conds;
   for (const auto& c : cases) {
-    const Scene<F> s = io::to_scene<F>(c.spec);
-    refs.push_back(analyze(s, io::to_strategies<F>(c.spec), Engine::generated));
-    conds.push_back(condition(refs.back(), s));
+    try {
+      const Scene<F> s = io::to_scene<F>(c.spec);
+      refs.push_back(analyze(s, io::to_strategies<F>(c.spec), Engine::generated));
+      conds.push_back(condition(refs.back(), s));
+    } catch (const io::CaseError& e) {
+      rethrow_naming(c, e);
+    } catch (const SolveError& e) {
+      rethrow_naming(c, e);
+    }
   }
   std::string report = fmt::format(
       "{} cases against their 100-digit solve (generated engine). Errors: max and rms in units of the type's eps;\n"
@@ -277,6 +304,8 @@ int verify(const VerifyOptions& o) {
       x = exact_analyze(io::to_scene<rational>(cases[i].spec), io::to_strategies<rational>(cases[i].spec));
     } catch (const Irrational&) {
       continue;
+    } catch (const io::CaseError&) {
+      continue;  // a rotation orthonormal to 1e-12 but not exactly: there are no exact fractions to hold it to
     }
     for (std::size_t k = 0; k < x->results.size(); ++k) {
       if (!x->results[k].solution) continue;

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "impact3d/case/limits.hpp"
+
 namespace impact3d::io {
 
 struct ParsedJson {
@@ -16,12 +18,14 @@ struct ParsedJson {
 };
 
 // Throws CaseError naming the path on a syntax error, a duplicated key, a NUL byte, or a limit exceeded
-// (depth, number of values, length of a key or of a number literal, written exponent). `path` is the
-// root's name in messages ("$", or e.g. "--strategy[0]").
+// (depth, number of values, length of a key or of a number literal, written exponent). `root` is the
+// root's name in messages ("$", or e.g. "--strategy[0]"). Number text is kept only as deep as a case
+// holds numbers (limits::kLiteralDepth), so the paths stored stay short whatever the file.
 ParsedJson parse_json_with_literals(std::string_view text, const std::string& root = "$");
 
-// The same checks, for documents whose number text is not needed (compare's results).
-nlohmann::json parse_json_bounded(std::string_view text, const std::string& root = "$");
+// The same checks, with nesting at most `depth`, for documents whose number text is not needed
+// (compare's results).
+nlohmann::json parse_json_bounded(std::string_view text, const std::string& root = "$", int depth = limits::kDepth);
 
 // Paths as printed: a member is ".key" when the key is an identifier, else ["key"] quoted and escaped;
 // an element is [index].

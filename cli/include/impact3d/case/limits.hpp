@@ -10,6 +10,9 @@ namespace impact3d::io::limits {
 inline constexpr std::size_t kCaseFileBytes = 1 << 20;       // a case file: 1 MiB
 inline constexpr std::size_t kResultFileBytes = 16 << 20;    // compare's reference and other results, JSON or CSV
 inline constexpr int kDepth = 32;                            // nesting of arrays and objects
+inline constexpr int kResultDepth = 8;                       // nesting in compare's result files (the contract's is 6)
+inline constexpr int kLiteralDepth = 5;                      // the deepest number a case holds: $.vehicles[i].inertia[r][c]
+inline constexpr std::size_t kStrategies = 64;               // strategies of one case, or --strategy options
 inline constexpr std::size_t kValues = 20000;                // JSON values in one document
 inline constexpr std::size_t kLiteralChars = 256;            // characters of one number literal (100 digits fit)
 inline constexpr std::size_t kKeyChars = 128;                // characters of one object key
