@@ -54,8 +54,7 @@ auto naming_strategies(const impact3d::io::CaseSpec& spec, F&& body) {
   try {
     return body();
   } catch (const impact3d::SolveError& e) {
-    const std::string where = e.strategy && *e.strategy < spec.strategies.size() ? spec.strategies[*e.strategy].path : "$";
-    throw impact3d::io::CaseError(where, std::string("no solution: ") + e.what());
+    throw impact3d::io::no_solution(spec, e);
   }
 }
 

@@ -341,6 +341,11 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes) {
   return text;
 }
 
+CaseError no_solution(const CaseSpec& spec, const SolveError& e) {
+  const std::string where = e.strategy && *e.strategy < spec.strategies.size() ? spec.strategies[*e.strategy].path : "$";
+  return CaseError(where, std::string("no solution: ") + e.what());
+}
+
 CaseSpec read_case(const std::string& json_text) {
   const ParsedJson parsed = parse_json_with_literals(json_text);
   return Reader(parsed).read();

@@ -11,6 +11,7 @@
 #include "impact3d/case/read_case.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/numeric/rounding.hpp"
 
 namespace impact3d::verification {
 namespace {
@@ -26,13 +27,8 @@ struct Case {
 
 // A case's error, with its file named: the reference solve of a case can fail (not approaching, a
 // strategy with no impulse) as `solve` would, and says where.
-[[noreturn]] void rethrow_naming(const Case& c, const std::exception& e) {
-  std::string path = "$";
-  if (const auto* ce = dynamic_cast<const io::CaseError*>(&e)) path = ce->path;
-  if (const auto* se = dynamic_cast<const SolveError*>(&e); se && se->strategy && *se->strategy < c.spec.strategies.size())
-    path = c.spec.strategies[*se->strategy].path;
-  const std::string what = dynamic_cast<const SolveError*>(&e) ? std::string("no solution: ") + e.what() : e.what();
-  throw io::CaseError((c.file.empty() ? c.name : c.file) + ": " + path, what);
+[[noreturn]] void rethrow_naming(const Case& c, const io::CaseError& e) {
+  throw io::CaseError((c.file.empty() ? c.name : c.file) + ": " + e.path, e.what());
 }
 
 io::Number num(double v, const std::string& path = "") {
@@ -137,21 +133,6 @@ struct Stat {
   }
 };
 
-// Conditioning of the case: kappa(K) and the worse cond(J) of the two vehicles (the solves and the
-// inverse), times the cancellation in the normal approach velocity, (|v_IC1| + |v_IC2|) / V_rn: the
-// decimal inputs and the rotations are rounded to each type (a relative eps each), V_rn = n.(v2 - v1)
-// carries an absolute error of eps times the velocities, and every impulse is proportional to V_rn
-// through the restitution constraint. A grazing contact (V_rn small beside the speeds) is ill-posed.
-double condition(const Analysis<F>& ref, const Scene<F>& s) {
-  double cj = 1;
-  for (const auto& b : s.body) {
-    Eigen::SelfAdjointEigenSolver<Mat3<F>> eig(b.J_B, Eigen::EigenvaluesOnly);
-    cj = std::max(cj, static_cast<double>(eig.eigenvalues().maxCoeff() / eig.eigenvalues().minCoeff()));
-  }
-  const double cancellation = static_cast<double>((v_Ic_W(s.body[0]).norm() + v_Ic_W(s.body[1]).norm()) / ref.V_ri.x());
-  return static_cast<double>(ref.kappa) * cj * std::max(1.0, cancellation);
-}
-
 struct Quantities {
   std::map<std::string, Stat> stat;
   int decisions_differ = 0;
@@ -222,7 +203,7 @@ void measure(const Case& c, const Analysis<F>& ref, double cond, Engine engine, 
     rec("V_rel after", wide_norm(s.V_rf, r.V_rf), r.V_ri.norm(), cond, where);
     rec("energy loss", abs(wide(s.energy_loss) - r.energy_loss), r.energy_before, cond, where);
     // Ratios are quotients; first order, their error grows as (1 + |r|)(1 + |mu|)^2 with r = V_cp / V_n.
-    const double r_ratio = static_cast<double>(hypot(r.V_ri.y(), r.V_ri.z()) / r.V_ri.x());
+    const double quotient = static_cast<double>(rounding::quotient_factor(r.V_ri));
     const std::optional<T>* mine[] = {&s.impulse.mu, &s.impulse.mu_t, &s.impulse.mu_z, &s.impulse.gir, &s.impulse.cir,
                                       &s.impulse.mu_t_critical, &s.impulse.mu_z_critical};
     const std::optional<F>* theirs[] = {&r.impulse.mu, &r.impulse.mu_t, &r.impulse.mu_z, &r.impulse.gir, &r.impulse.cir,
@@ -232,7 +213,7 @@ void measure(const Case& c, const Analysis<F>& ref, double cond, Engine engine, 
       const F mu = **theirs[i];
       const double m = std::fabs(static_cast<double>(mu));
       if (!std::isfinite(m)) continue;
-      rec("impulse ratios", abs(wide(**mine[i]) - mu), F(1) + abs(mu), cond * (1 + r_ratio) * (1 + m), where);
+      rec("impulse ratios", abs(wide(**mine[i]) - mu), F(1) + abs(mu), cond * quotient * (1 + m), where);
     }
   }
 }
@@ -244,10 +225,8 @@ void run_precision(const std::string& name, const std::vector<Case>& cases, cons
     Quantities q;
     for (std::size_t i = 0; i < cases.size(); ++i) measure<T>(cases[i], refs[i], conds[i], engine, q);
     for (const auto& [quantity, s] : q.stat) {
-      // Bound, in units of eps x the case's conditioning (and for ratios the quotient's): 32, as for the
-      // engines against each other: a handful of roundings that do not cancel on each path, plus the
-      // rounding of the decimal inputs to the type, which the conditioning amplifies the same way.
-      const bool pass = s.max_units <= 32;
+      // Bound, in units of eps x the case's amplification (and for ratios the quotient's): rounding.hpp.
+      const bool pass = s.max_units <= rounding::kResultRoundings;
       ok = ok && pass;
       report += fmt::format("{:<12} {:<10} {:<15} {:>12.3f} {:>10.3f} {:>10.3f} {:>8.1f}  {}{}\n", name, engine_name(engine),
                             quantity, s.max_eps, std::sqrt(s.sum_sq / s.n), s.max_units, s.min_digits, s.worst,
@@ -279,11 +258,11 @@ int verify(const VerifyOptions& o) {
     try {
       const Scene<F> s = io::to_scene<F>(c.spec);
       refs.push_back(analyze(s, io::to_strategies<F>(c.spec), Engine::generated));
-      conds.push_back(condition(refs.back(), s));
+      conds.push_back(static_cast<double>(refs.back().amplification));  // rounding.hpp
     } catch (const io::CaseError& e) {
       rethrow_naming(c, e);
     } catch (const SolveError& e) {
-      rethrow_naming(c, e);
+      rethrow_naming(c, io::no_solution(c.spec, e));
     }
   }
   std::string report = fmt::format(

@@ -66,6 +66,10 @@ struct CaseSpec {
   bool strategy_is_array = false;
 };
 
+// A strategy with no solution as bad input at its path in the case ($.strategy[2]), or at "$" when the
+// failure belongs to no one strategy.
+CaseError no_solution(const CaseSpec& spec, const SolveError& e);
+
 // Parses and validates everything that needs no arithmetic; throws CaseError.
 CaseSpec read_case(const std::string& json_text);
 

@@ -35,8 +35,7 @@ void flag_precision(Solution<Scalar>& s, const Scalar& amplification) {
       s.warnings.push_back({WarningCode::not_finite,
                             "not finite: a result is NaN or infinite at this precision (printed as null in JSON); "
                             "it cannot be trusted"});
-    using std::hypot;
-    const Scalar quotient = Scalar(1) + hypot(s.V_ri.y(), s.V_ri.z()) / s.V_ri.x();
+    const Scalar quotient = rounding::quotient_factor(s.V_ri);
     s.rounding_bound = rounding::relative_bound(Scalar(amplification * quotient));
     const double a = static_cast<double>(Scalar(amplification * quotient));
     const double bound = static_cast<double>(s.rounding_bound);

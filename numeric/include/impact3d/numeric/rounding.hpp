@@ -58,6 +58,14 @@ Scalar amplification(const Scene<Scalar>& s, const Scalar& kappa_K) {
   }
 }
 
+// The quotient's factor of a ratio u.P / P_n, 1 + |V_cp / V_n|: ratios and the decisions taken on them
+// carry it besides the amplification.
+template <typename Scalar>
+Scalar quotient_factor(const Vec3<Scalar>& V_ri) {
+  using std::hypot;
+  return Scalar(1) + hypot(V_ri.y(), V_ri.z()) / V_ri.x();
+}
+
 // The relative bound of an impulse at this precision.
 template <typename Scalar>
 Scalar relative_bound(const Scalar& amplification) {

@@ -66,10 +66,8 @@ void flag_if_undecided(ImpulseSolution<Scalar>& out, const Problem<Scalar>& p, c
                        const std::string& name) {
   if constexpr (!is_exact_v<Scalar>) {
     using std::abs;
-    using std::hypot;
     if (!is_finite(limit)) return;
-    const Scalar quotient = Scalar(1) + hypot(p.V_ri.y(), p.V_ri.z()) / p.V_ri.x();
-    const Scalar bound = rounding::relative_bound(p.amplification) * quotient * (Scalar(1) + abs(limit));
+    const Scalar bound = rounding::relative_bound(p.amplification) * rounding::quotient_factor(p.V_ri) * (Scalar(1) + abs(limit));
     if (abs(mu - limit) <= bound) {
       std::ostringstream text;
       text.precision(3);
