@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/case/read_case.hpp"
+#include "impact3d/io/read_case.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 #include "impact3d/numeric/precision_warnings.hpp"
 

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "impact3d/case/read_case.hpp"
+#include "impact3d/io/read_case.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
 namespace impact3d::test {

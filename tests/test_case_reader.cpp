@@ -1,7 +1,7 @@
 // The case-file reader: literals kept exactly, defaults, shorthands and command-line strategies.
 #include <catch2/catch.hpp>
 
-#include "impact3d/case/json_literals.hpp"
+#include "impact3d/io/json_literals.hpp"
 #include "support.hpp"
 
 using namespace impact3d;

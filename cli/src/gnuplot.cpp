@@ -15,7 +15,7 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/case/escape.hpp"
+#include "impact3d/io/escape.hpp"
 #include "user_error.hpp"
 
 extern char** environ;

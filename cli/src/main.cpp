@@ -6,13 +6,13 @@
 
 #include <CLI/CLI.hpp>
 
-#include "impact3d/case/escape.hpp"
-#include "impact3d/case/read_case.hpp"
-#include "compare.hpp"
-#include "plot.hpp"
-#include "render.hpp"
-#include "user_error.hpp"
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/read_case.hpp"
+#include "impact3d/io/render.hpp"
+#include "impact3d/verification/compare.hpp"
 #include "impact3d/verification/verify.hpp"
+#include "plot.hpp"
+#include "user_error.hpp"
 
 namespace {
 
@@ -60,7 +60,7 @@ auto naming_strategies(const impact3d::io::CaseSpec& spec, F&& body) {
 
 // The strategies of the case or the command line.
 int solve(const std::string& case_path, const std::vector<std::string>& strategies, const std::string& precision,
-          const impact3d::cli::RenderOptions& options) {
+          const impact3d::io::RenderOptions& options) {
   using namespace impact3d;
   return guarded(case_path, [&] {
     io::CaseSpec spec = io::read_case(io::read_text_file(case_path));
@@ -71,14 +71,7 @@ int solve(const std::string& case_path, const std::vector<std::string>& strategi
       for (std::size_t i = 0; i < strategies.size(); ++i)
         spec.strategies.push_back(io::read_strategy_option(strategies[i], static_cast<int>(i)));
     }
-    const std::string output = naming_strategies(spec, [&] {
-      if (precision == "double") return cli::render_double(spec, options);
-      if (precision == "long-double") return cli::render_long_double(spec, options);
-      if (precision == "float128") return cli::render_float128(spec, options);
-      if (precision == "50") return cli::render_float50(spec, options);
-      if (precision == "100") return cli::render_float100(spec, options);
-      return cli::render_exact(spec, options);
-    });
+    const std::string output = naming_strategies(spec, [&] { return io::render(spec, precision, options); });
     std::fwrite(output.data(), 1, output.size(), stdout);
     return 0;
   });
@@ -106,13 +99,13 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--precision", precision,
                         "arithmetic: double, long-double, float128, 50 or 100 decimal digits, or exact (fractions where "
                         "the result is rational, beside the 100-digit solve)")
-      ->check(CLI::IsMember({"double", "long-double", "float128", "50", "100", "exact"}));
+      ->check(CLI::IsMember(impact3d::io::precision_names()));
   solve_cmd->add_option("--engine", engine,
                         "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
       ->check(CLI::IsMember({"generated", "direct"}));
   auto* compare_cmd = app.add_subcommand("compare", "compare another tool's results with reference results");
   std::string reference, other;
-  impact3d::cli::CompareOptions copt;
+  impact3d::verification::CompareOptions copt;
   compare_cmd->add_option("reference", reference, "reference result (JSON file) or directory (verification/reference)")->required();
   compare_cmd->add_option("other", other, "the other tool's results: JSON file, directory of JSON files, or CSV")->required();
   // A tolerance that admits everything (inf) or nothing (< 0) is a usage error, not a verdict.
@@ -153,7 +146,7 @@ int main(int argc, char** argv) {
       return 0;
     });
   if (verify_cmd->parsed()) return guarded("", [&] { return impact3d::verification::verify(vopt); });
-  if (compare_cmd->parsed()) return guarded("", [&] { return impact3d::cli::compare(reference, other, copt); });
+  if (compare_cmd->parsed()) return guarded("", [&] { return impact3d::verification::compare(reference, other, copt); });
   if (digits == 0 && precision == "double") digits = 10;
   return solve(case_path, strategies, precision,
                {format, digits, engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated});

@@ -7,8 +7,8 @@
 #include <fmt/format.h>
 
 #include "gnuplot.hpp"
-#include "impact3d/case/escape.hpp"
-#include "impact3d/case/read_case.hpp"
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/read_case.hpp"
 
 namespace impact3d::cli {
 namespace {

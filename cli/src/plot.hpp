@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "impact3d/case/case_spec.hpp"
+#include "impact3d/io/case_spec.hpp"
 #include "impact3d/numeric/problem.hpp"
 
 namespace impact3d::cli {

@@ -3,7 +3,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "impact3d/case/read_case.hpp"
+#include "impact3d/io/read_case.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) return 2;

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "impact3d/case/read_case.hpp"
+#include "impact3d/io/read_case.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 

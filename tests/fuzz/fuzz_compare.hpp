@@ -11,9 +11,8 @@
 #include <fstream>
 #include <string>
 
-#include "../../cli/src/compare.hpp"
-#include "../../cli/src/user_error.hpp"
-#include "impact3d/case/case_spec.hpp"
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/verification/compare.hpp"
 
 inline int fuzz_compare(const std::uint8_t* data, std::size_t size, const char* extension) {
   static const bool quiet = std::freopen("/dev/null", "w", stdout) != nullptr;  // compare prints its table
@@ -21,17 +20,15 @@ inline int fuzz_compare(const std::uint8_t* data, std::size_t size, const char* 
   const std::string path = "/tmp/impact3d-fuzz-" + std::to_string(::getpid()) + extension;
   std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   try {
-    impact3d::cli::CompareOptions o;
-    (void)impact3d::cli::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
+    impact3d::verification::CompareOptions o;
+    (void)impact3d::verification::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
     o.subset = true;
-    (void)impact3d::cli::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
+    (void)impact3d::verification::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
   } catch (const impact3d::io::CaseError&) {
-  } catch (const impact3d::cli::UserError&) {
   }
   try {
-    (void)impact3d::cli::compare(path, IMPACT3D_FUZZ_REFERENCE, impact3d::cli::CompareOptions{});
+    (void)impact3d::verification::compare(path, IMPACT3D_FUZZ_REFERENCE, impact3d::verification::CompareOptions{});
   } catch (const impact3d::io::CaseError&) {
-  } catch (const impact3d::cli::UserError&) {
   }
   std::remove(path.c_str());
   return 0;

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <iostream>
 
-#include "impact3d/case/read_case.hpp"
+#include "impact3d/io/read_case.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 
 namespace fs = std::filesystem;

@@ -11,6 +11,7 @@
 #include "impact3d/numeric/post_impact.hpp"
 #include "impact3d/numeric/precision_warnings.hpp"
 #include "impact3d/numeric/rounding.hpp"
+#include "impact3d/numeric/scalars.hpp"
 #include "impact3d/numeric/strategies/brach.hpp"
 #include "impact3d/numeric/strategies/pc_crash.hpp"
 #include "impact3d/numeric/strategies/wach.hpp"
@@ -106,6 +107,8 @@ Analysis<Scalar> analyze(const Scene<Scalar>& s, const std::vector<Strategy<Scal
 }  // namespace impact3d
 
 namespace impact3d {
-extern template Analysis<double> analyze(const Scene<double>&, const std::vector<Strategy<double>>&, Engine);
-extern template Analysis<long double> analyze(const Scene<long double>&, const std::vector<Strategy<long double>>&, Engine);
+#define IMPACT3D_EXTERN_ANALYZE_(type, name, u) \
+  extern template Analysis<type> analyze(const Scene<type>&, const std::vector<Strategy<type>>&, Engine);
+IMPACT3D_SCALARS(IMPACT3D_EXTERN_ANALYZE_)
+#undef IMPACT3D_EXTERN_ANALYZE_
 }  // namespace impact3d

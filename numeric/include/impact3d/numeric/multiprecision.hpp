@@ -52,11 +52,3 @@ struct NumTraits<impact3d::mp::float50> : impact3d::mp::NumTraitsFor<impact3d::m
 template <>
 struct NumTraits<impact3d::mp::float100> : impact3d::mp::NumTraitsFor<impact3d::mp::float100> {};
 }  // namespace Eigen
-
-#include "impact3d/numeric/analysis.hpp"
-
-namespace impact3d {
-extern template Analysis<mp::float128> analyze(const Scene<mp::float128>&, const std::vector<Strategy<mp::float128>>&, Engine);
-extern template Analysis<mp::float50> analyze(const Scene<mp::float50>&, const std::vector<Strategy<mp::float50>>&, Engine);
-extern template Analysis<mp::float100> analyze(const Scene<mp::float100>&, const std::vector<Strategy<mp::float100>>&, Engine);
-}  // namespace impact3d

@@ -21,6 +21,7 @@
 
 #include "impact3d/numeric/exact.hpp"
 #include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/scalars.hpp"
 
 namespace impact3d::rounding {
 
@@ -73,21 +74,12 @@ Scalar relative_bound(const Scalar& amplification) {
   else return Scalar(kResultRoundings) * std::numeric_limits<Scalar>::epsilon() * amplification;
 }
 
-// The precisions of the program, widest last, with their unit roundoff: long double 2^-63, float128
-// 2^-112, 50 and 100 decimal digits (Boost cpp_bin_float_50 and MPFR at 100 digits hold a few more).
-struct Precision {
-  const char* name;
-  double eps;
-};
-inline constexpr Precision kPrecisions[] = {
-    {"double", 0x1p-52}, {"long-double", 0x1p-63}, {"float128", 0x1p-112}, {"50", 1e-49}, {"100", 1e-99}};
-
 // The narrowest precision whose bound for `amplification` is within the trusted fraction; empty when
 // none is (or the amplification is not finite, as when K or J is not positive definite here).
 inline std::string precision_for(double amplification) {
   if (!std::isfinite(amplification)) return "";
   for (const auto& p : kPrecisions)
-    if (kResultRoundings * p.eps * amplification <= kTrustedFraction) return p.name;
+    if (kResultRoundings * p.unit_roundoff * amplification <= kTrustedFraction) return std::string(p.name);
   return "";
 }
 

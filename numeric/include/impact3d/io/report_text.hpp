@@ -6,13 +6,11 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/case/present.hpp"
+#include "impact3d/io/present.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
-namespace impact3d::cli {
+namespace impact3d::io {
 
-using io::CaseSpec;
-using io::Present;
 
 // Rows of a label and one cell per column, printed aligned.
 class Table {
@@ -149,4 +147,4 @@ std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   return out;
 }
 
-}  // namespace impact3d::cli
+}  // namespace impact3d::io

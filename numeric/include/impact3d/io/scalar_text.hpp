@@ -12,8 +12,8 @@
 
 #include <boost/multiprecision/cpp_int.hpp>
 
-#include "impact3d/case/decimal.hpp"
-#include "impact3d/case/limits.hpp"
+#include "impact3d/io/decimal.hpp"
+#include "impact3d/io/limits.hpp"
 
 namespace impact3d::io {
 

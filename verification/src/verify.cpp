@@ -1,4 +1,4 @@
-#include "verify.hpp"
+#include "impact3d/verification/verify.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -8,10 +8,10 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/case/read_case.hpp"
+#include "impact3d/io/read_case.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
 #include "impact3d/numeric/rounding.hpp"
+#include "impact3d/numeric/scalars.hpp"
 
 namespace impact3d::verification {
 namespace {
@@ -302,10 +302,9 @@ int verify(const VerifyOptions& o) {
   }
   report += fmt::format("exact: {} results of cases with rational rotations agree with the 100-digit solve to 95 digits\n\n",
                         exact_results);
-  run_precision<double>("double", cases, refs, conds, report, ok);
-  run_precision<long double>("long-double", cases, refs, conds, report, ok);
-  run_precision<mp::float128>("float128", cases, refs, conds, report, ok);
-  run_precision<mp::float50>("50", cases, refs, conds, report, ok);
+  for_each_scalar([&]<typename T>(std::type_identity<T>) {
+    if constexpr (!std::is_same_v<T, F>) run_precision<T>(std::string(precision_name<T>), cases, refs, conds, report, ok);
+  });
   report += ok ? "\nall bounds hold\n" : "\nFAILED: a bound is exceeded or a decision differs\n";
   std::fputs(report.c_str(), stdout);
   return ok ? 0 : 1;

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "impact3d/case/case_spec.hpp"
-#include "impact3d/case/scalar_text.hpp"
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/scalar_text.hpp"
 #include "impact3d/numeric/types.hpp"
 #include "impact3d/numeric/units.hpp"
 

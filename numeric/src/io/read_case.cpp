@@ -12,13 +12,13 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/case/case_spec.hpp"
-#include "impact3d/case/decimal.hpp"
-#include "impact3d/case/escape.hpp"
-#include "impact3d/case/json_literals.hpp"
-#include "impact3d/case/limits.hpp"
-#include "impact3d/case/scalar_text.hpp"
-#include "impact3d/case/strategy_option.hpp"
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/decimal.hpp"
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_literals.hpp"
+#include "impact3d/io/limits.hpp"
+#include "impact3d/io/scalar_text.hpp"
+#include "impact3d/io/strategy_option.hpp"
 #include "impact3d/numeric/exact.hpp"
 
 namespace impact3d::io {

@@ -1,4 +1,4 @@
-#include "compare.hpp"
+#include "impact3d/verification/compare.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -18,12 +18,12 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "impact3d/case/case_spec.hpp"
-#include "impact3d/case/escape.hpp"
-#include "impact3d/case/json_literals.hpp"
-#include "impact3d/case/limits.hpp"
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_literals.hpp"
+#include "impact3d/io/limits.hpp"
 
-namespace impact3d::cli {
+namespace impact3d::verification {
 namespace {
 
 namespace fs = std::filesystem;
@@ -542,4 +542,4 @@ int compare(const std::string& reference, const std::string& other, const Compar
   return failed_cases || compared == 0 ? 1 : 0;
 }
 
-}  // namespace impact3d::cli
+}  // namespace impact3d::verification

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "impact3d/case/case_spec.hpp"
+#include "impact3d/io/case_spec.hpp"
 
 namespace impact3d::io {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "impact3d/case/limits.hpp"
+#include "impact3d/io/limits.hpp"
 #include "impact3d/numeric/strategy.hpp"
 #include "impact3d/numeric/units.hpp"
 

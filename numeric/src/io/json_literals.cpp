@@ -1,4 +1,4 @@
-#include "impact3d/case/json_literals.hpp"
+#include "impact3d/io/json_literals.hpp"
 
 #include <cctype>
 #include <set>
@@ -6,10 +6,10 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/case/case_spec.hpp"
-#include "impact3d/case/decimal.hpp"
-#include "impact3d/case/escape.hpp"
-#include "impact3d/case/limits.hpp"
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/decimal.hpp"
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/limits.hpp"
 
 namespace impact3d::io {
 namespace {

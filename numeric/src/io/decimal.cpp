@@ -1,4 +1,4 @@
-#include "impact3d/case/decimal.hpp"
+#include "impact3d/io/decimal.hpp"
 
 #include <cctype>
 

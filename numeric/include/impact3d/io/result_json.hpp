@@ -4,8 +4,8 @@
 
 #include <functional>
 
-#include "impact3d/case/json_writer.hpp"
-#include "impact3d/case/present.hpp"
+#include "impact3d/io/json_writer.hpp"
+#include "impact3d/io/present.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
 namespace impact3d::io {

@@ -2,12 +2,16 @@
 // (or, per strategy, which quantity needs a square root).
 #include <fmt/format.h>
 
-#include "impact3d/numeric/exact_analysis.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
-#include "render_impl.hpp"
+#include <stdexcept>
 
-namespace impact3d::cli {
+#include "impact3d/io/read_case.hpp"
+#include "impact3d/io/render.hpp"
+#include "impact3d/io/report_text.hpp"
+#include "impact3d/numeric/exact_analysis.hpp"
+
+namespace impact3d::io {
 namespace {
+#if IMPACT3D_MULTIPRECISION
 
 struct ExactText {
   UnitFactors<rational> f;
@@ -22,13 +26,13 @@ struct ExactText {
   }
 };
 
-void string_array(io::JsonWriter& w, const std::vector<std::string>& items) {
+void string_array(JsonWriter& w, const std::vector<std::string>& items) {
   w.begin_array();
   for (const auto& s : items) w.string(s);
   w.end_array();
 }
 
-void write_exact(io::JsonWriter& w, const io::CaseSpec& spec, const std::string& scene_not_rational,
+void write_exact(JsonWriter& w, const CaseSpec& spec, const std::string& scene_not_rational,
                  const std::optional<ExactAnalysis>& x) {
   w.key("exact").begin_object();
   w.key("note").string("every quantity below is rational and given exactly as a string p/q in the case's units; the "
@@ -102,7 +106,7 @@ void write_exact(io::JsonWriter& w, const io::CaseSpec& spec, const std::string&
   w.end_object();
 }
 
-std::string exact_text(const io::CaseSpec& spec, const std::string& scene_not_rational, const std::optional<ExactAnalysis>& x) {
+std::string exact_text(const CaseSpec& spec, const std::string& scene_not_rational, const std::optional<ExactAnalysis>& x) {
   std::string s = "\nExact (rational arithmetic; fractions in the case's units)\n";
   if (!x) return s + "  not rational: " + scene_not_rational + "\n";
   const ExactText t{unit_factors<rational>(spec.units), spec.units == Units::SI};
@@ -113,7 +117,7 @@ std::string exact_text(const io::CaseSpec& spec, const std::string& scene_not_ra
   }
   for (std::size_t k = 0; k < x->results.size(); ++k) {
     const auto& r = x->results[k];
-    s += "  " + io::strategy_label(spec.strategies[k]) + ": ";
+    s += "  " + strategy_label(spec.strategies[k]) + ": ";
     if (!r.solution) {
       s += "not rational: " + r.not_rational + " (its values above are at 100 digits)\n";
       continue;
@@ -125,22 +129,47 @@ std::string exact_text(const io::CaseSpec& spec, const std::string& scene_not_ra
   return s;
 }
 
-}  // namespace
-
-std::string render_exact(const io::CaseSpec& spec, const RenderOptions& o) {
+std::string render_exact(const CaseSpec& spec, const RenderOptions& o) {
   std::optional<ExactAnalysis> x;
   std::string not_rational;
   try {
-    x = exact_analyze(io::to_scene<rational>(spec), io::to_strategies<rational>(spec), o.engine);
+    x = exact_analyze(to_scene<rational>(spec), to_strategies<rational>(spec), o.engine);
   } catch (const Irrational& e) {
     not_rational = e.what();
   }
   using F = mp::float100;
-  const Analysis<F> a = analyze(io::to_scene<F>(spec), io::to_strategies<F>(spec), o.engine);
+  const Analysis<F> a = analyze(to_scene<F>(spec), to_strategies<F>(spec), o.engine);
   if (o.format == "json")
-    return io::result_json(spec, a, "exact", 0, false, [&](io::JsonWriter& w) { write_exact(w, spec, not_rational, x); });
+    return result_json(spec, a, "exact", 0, false, [&](JsonWriter& w) { write_exact(w, spec, not_rational, x); });
   return report_text(spec, a, "exact (100 digits where not rational)", o.digits > 0 ? o.digits : 100) +
          exact_text(spec, not_rational, x);
 }
+#endif
 
-}  // namespace impact3d::cli
+}  // namespace
+
+std::vector<std::string> precision_names() {
+  std::vector<std::string> names;
+  for (const auto& p : kPrecisions) names.emplace_back(p.name);
+#if IMPACT3D_MULTIPRECISION
+  names.emplace_back("exact");
+#endif
+  return names;
+}
+
+std::string render(const CaseSpec& spec, std::string_view precision, const RenderOptions& o) {
+#if IMPACT3D_MULTIPRECISION
+  if (precision == "exact") return render_exact(spec, o);
+#endif
+  std::string out;
+  bool found = false;
+  for_each_scalar([&]<typename Scalar>(std::type_identity<Scalar>) {
+    if (precision_name<Scalar> != precision) return;
+    out = render<Scalar>(spec, o);
+    found = true;
+  });
+  if (!found) throw std::invalid_argument("no precision named " + std::string(precision));
+  return out;
+}
+
+}  // namespace impact3d::io

@@ -3,7 +3,7 @@
 
 #include <string>
 
-namespace impact3d::cli {
+namespace impact3d::verification {
 
 struct CompareOptions {
   double rtol = 1e-9;
@@ -17,4 +17,4 @@ struct CompareOptions {
 // anything is printed.
 int compare(const std::string& reference, const std::string& other, const CompareOptions& o);
 
-}  // namespace impact3d::cli
+}  // namespace impact3d::verification

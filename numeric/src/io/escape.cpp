@@ -1,4 +1,4 @@
-#include "impact3d/case/escape.hpp"
+#include "impact3d/io/escape.hpp"
 
 #include <fmt/format.h>
 

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "impact3d/case/limits.hpp"
+#include "impact3d/io/limits.hpp"
 
 namespace impact3d::io {
 

@@ -4,9 +4,9 @@
 
 #include <Eigen/Cholesky>
 
-#include "impact3d/case/case_spec.hpp"
-#include "impact3d/case/present.hpp"
-#include "impact3d/case/scalar_text.hpp"
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/present.hpp"
+#include "impact3d/io/scalar_text.hpp"
 #include "impact3d/numeric/kinematics.hpp"
 #include "impact3d/numeric/rotation.hpp"
 #include "impact3d/numeric/strategy.hpp"

@@ -1,0 +1,36 @@
+// A read case solved at one precision and written as the contract's result (JSON) or the text report.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/numeric/problem.hpp"
+#include "impact3d/numeric/scalars.hpp"
+
+namespace impact3d::io {
+
+struct RenderOptions {
+  std::string format = "text";  // "text" | "json"
+  int digits = 0;               // text report; 0 = the precision's digits10
+  Engine engine = Engine::generated;
+};
+
+// Throws CaseError for inputs that fail the arithmetic checks, SolveError for no solution.
+template <typename Scalar>
+std::string render(const CaseSpec& spec, const RenderOptions& o);
+
+#define IMPACT3D_EXTERN_RENDER_(type, name, u) \
+  extern template std::string render<type>(const CaseSpec&, const RenderOptions&);
+IMPACT3D_SCALARS(IMPACT3D_EXTERN_RENDER_)
+#undef IMPACT3D_EXTERN_RENDER_
+
+// The precisions `render` takes by name: every scalar of scalars.hpp and, with the multiprecision
+// scalars, "exact" (fractions where the result is rational, beside the 100-digit computation).
+std::vector<std::string> precision_names();
+
+// The case at the named precision; throws std::invalid_argument for a name precision_names() lacks.
+std::string render(const CaseSpec& spec, std::string_view precision, const RenderOptions& o);
+
+}  // namespace impact3d::io

@@ -1,0 +1,67 @@
+// The scalar types impact3d is instantiated, dispatched and verified at: the one list (as Drake's
+// common/default_scalars.h). numeric/CMakeLists.txt reads the X(...) lines below, one per line and in
+// this order, and compiles the instantiation sources once per scalar; the program's --precision names,
+// the precision a rounding warning suggests and the rows of `verify` all come from here.
+//
+// X(type, precision name, unit roundoff u): u is what rounding.hpp's bounds are stated in. Binary types
+// have u = 2^(1 - p); the decimal types are held to 10^(1 - digits), what their digits promise (Boost
+// cpp_bin_float<50> and MPFR at 100 digits carry a few bits more).
+#pragma once
+
+#include <cstddef>
+#include <string_view>
+#include <tuple>
+#include <type_traits>
+
+#define IMPACT3D_NUMERIC_SCALARS(X)        \
+  X(double, "double", 0x1p-52)             \
+  X(long double, "long-double", 0x1p-63)
+
+#if IMPACT3D_MULTIPRECISION
+#include "impact3d/numeric/multiprecision.hpp"
+#define IMPACT3D_MULTIPRECISION_SCALARS(X)            \
+  X(::impact3d::mp::float128, "float128", 0x1p-112)   \
+  X(::impact3d::mp::float50, "50", 1e-49)             \
+  X(::impact3d::mp::float100, "100", 1e-99)
+#else
+#define IMPACT3D_MULTIPRECISION_SCALARS(X)
+#endif
+
+#define IMPACT3D_SCALARS(X) IMPACT3D_NUMERIC_SCALARS(X) IMPACT3D_MULTIPRECISION_SCALARS(X)
+
+namespace impact3d {
+
+#define IMPACT3D_SCALAR_TYPE_(type, name, u) type,
+// The list as types; `void` closes it.
+using ScalarList = std::tuple<IMPACT3D_SCALARS(IMPACT3D_SCALAR_TYPE_) void>;
+#undef IMPACT3D_SCALAR_TYPE_
+inline constexpr std::size_t kScalarCount = std::tuple_size_v<ScalarList> - 1;
+template <std::size_t I>
+using ScalarAt = std::tuple_element_t<I, ScalarList>;
+
+struct Precision {
+  std::string_view name;
+  double unit_roundoff;
+};
+
+#define IMPACT3D_SCALAR_PRECISION_(type, name, u) Precision{name, u},
+// The precisions, narrowest first.
+inline constexpr Precision kPrecisions[] = {IMPACT3D_SCALARS(IMPACT3D_SCALAR_PRECISION_)};
+#undef IMPACT3D_SCALAR_PRECISION_
+
+template <typename Scalar>
+inline constexpr std::string_view precision_name = {};
+#define IMPACT3D_SCALAR_NAME_(type, name, u) \
+  template <>                                \
+  inline constexpr std::string_view precision_name<type> = name;
+IMPACT3D_SCALARS(IMPACT3D_SCALAR_NAME_)
+#undef IMPACT3D_SCALAR_NAME_
+
+// f(std::type_identity<Scalar>{}) for each scalar of the list, in order.
+template <typename F>
+void for_each_scalar(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) { (f(std::type_identity<ScalarAt<I>>{}), ...); }(
+      std::make_index_sequence<kScalarCount>{});
+}
+
+}  // namespace impact3d

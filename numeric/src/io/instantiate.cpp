@@ -1,0 +1,24 @@
+// The case format's solve-and-write at one scalar of scalars.hpp: numeric/CMakeLists.txt compiles this
+// file once per scalar with IMPACT3D_SCALAR_INDEX set.
+#include <limits>
+
+#include "impact3d/io/read_case.hpp"
+#include "impact3d/io/render.hpp"
+#include "impact3d/io/report_text.hpp"
+#include "impact3d/numeric/analysis.hpp"
+
+namespace impact3d::io {
+
+template <typename Scalar>
+std::string render(const CaseSpec& spec, const RenderOptions& o) {
+  const Scene<Scalar> scene = to_scene<Scalar>(spec);
+  const Analysis<Scalar> a = analyze(scene, to_strategies<Scalar>(spec), o.engine);
+  const std::string precision(precision_name<Scalar>);
+  if (o.format == "json") return result_json(spec, a, precision);
+  const int digits = o.digits > 0 ? o.digits : std::numeric_limits<Scalar>::digits10;
+  return report_text(spec, a, precision, digits);
+}
+
+template std::string render<ScalarAt<IMPACT3D_SCALAR_INDEX>>(const CaseSpec&, const RenderOptions&);
+
+}  // namespace impact3d::io
