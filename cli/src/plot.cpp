@@ -21,7 +21,8 @@ struct Context {
   const OutputDir& dir;
   const Scene<double>& scene;  // SI
   const Analysis<double>& a;
-  Problem<double> p;
+  const Problem<double>& p;
+  const Figures<double>& fig;  // the geometry drawn, from the analysis (impulse_space.hpp)
   UnitFactors<double> f;
   std::string imp_unit, vel_unit, energy_unit;
   std::string written, warnings;
@@ -78,10 +79,14 @@ std::string points_file(const OutputDir& dir, const std::string& name, const std
   return items;
 }
 
-std::string header_lines(const Context& c, const std::string& title, int w = 900, int h = 700) {
+// The title: the case's name, the figure's title, then one line per further line given (warnings).
+std::string header_lines(const Context& c, const std::string& title, int w = 900, int h = 700,
+                         const std::vector<std::string>& more = {}) {
+  std::string lines = gnuplot_string(c.spec.name) + ".\"\\n\"." + gnuplot_string(title);
+  for (const auto& line : more) lines += ".\"\\n\"." + gnuplot_string(line);
   // clip two: a line whose two ends lie beyond the range is still drawn where it crosses it.
   return terminal(c, w, h) + "set datafile separator comma\nset grid\nset clip two\nset key below noenhanced\n" +
-         fmt::format("set title {}.\"\\n\".{} noenhanced\n", gnuplot_string(c.spec.name), gnuplot_string(title));
+         fmt::format("set title {} noenhanced\n", lines);
 }
 
 std::string label(const io::StrategySpec& s) { return io::strategy_label(s); }
@@ -108,22 +113,14 @@ std::string series(const Context& c, const std::string& verb, const std::string&
   return out;
 }
 
-// The point of the Critical Impulse Line on the case's restitution plane: no sliding at all.
-V3 critical_line_point(const Problem<double>& p) {
-  return direct::DirectEngine::brach_impulse(p, std::optional<double>(), std::optional<double>(), "critical impulse line");
-}
-
-double case_gir(const Problem<double>& p) {
-  const V3 P = direct::DirectEngine::full_impact(p, p.restitution);
-  return std::hypot(P.y(), P.z()) / P.x();
-}
+std::string trace(const Line2<double>& l, double scale, double extent) { return line_segment(l.a, l.b, l.r / scale, extent); }
 
 void contact_plane_view(Context& c) {
-  const auto& p = c.p;
-  const auto& K = p.K;
-  const double s = c.f.impulse, R = p.m_prime * (1 + p.restitution) * p.V_ri.x();
-  const V3 fi = direct::DirectEngine::full_impact(p, p.restitution), cil = critical_line_point(p);
-  std::vector<Point> pts{{"Full Impact", fi.y() / s, fi.z() / s}, {"no sliding (Critical Impulse Line)", cil.y() / s, cil.z() / s}};
+  const auto& f = c.fig.contact;
+  const double s = c.f.impulse;
+  const V3& fi = f.full_impact;
+  std::vector<Point> pts{{"Full Impact", fi.y() / s, fi.z() / s}};
+  if (f.no_sliding) pts.push_back({"no sliding (Critical Impulse Line)", f.no_sliding->y() / s, f.no_sliding->z() / s});
   for (std::size_t k = 0; k < c.a.solutions.size(); ++k) {
     const V3& P = c.a.solutions[k].impulse.P_C;
     pts.push_back({label(c.spec.strategies[k]), P.y() / s, P.z() / s});
@@ -137,27 +134,23 @@ void contact_plane_view(Context& c) {
   double margin = std::max({0.6 * (x1 - x0), 0.6 * (y1 - y0), 0.15 * extent});
   if (!(margin > 0)) margin = 0.15 * fi.x() / s;  // every point at the origin: frame by the normal impulse's size
   if (!(extent > 0)) extent = margin;
-  // Traces on the restitution plane (P_n eliminated through it) of the t and z no-sliding planes.
-  const std::string t_trace = line_segment(K(1, 1) - K(1, 0) * K(0, 1) / K(0, 0), K(1, 2) - K(1, 0) * K(0, 2) / K(0, 0),
-                                           (p.m_prime * p.V_ri.y() - K(1, 0) * R / K(0, 0)) / s, 3 * extent);
-  const std::string z_trace = line_segment(K(2, 1) - K(2, 0) * K(0, 1) / K(0, 0), K(2, 2) - K(2, 0) * K(0, 2) / K(0, 0),
-                                           (p.m_prime * p.V_ri.z() - K(2, 0) * R / K(0, 0)) / s, 3 * extent);
+  const std::string t_trace = trace(f.t_trace, s, 3 * extent), z_trace = trace(f.z_trace, s, 3 * extent);
   // The solution planes of PC-Crash (phi_FI, eq 15) and Wach (phi, eq 21) through the origin.
   std::string plane_lines[2];
-  const double phis[2] = {std::atan2(fi.z(), fi.y()), std::atan2(p.V_ri.z(), p.V_ri.y())};
+  const double phis[2] = {f.phi_fi_deg * M_PI / 180, f.phi_deg * M_PI / 180};
   for (int j = 0; j < 2; ++j)
     plane_lines[j] = fmt::format("{:.17g},{:.17g}\n{:.17g},{:.17g}\n", -3 * extent * std::cos(phis[j]), -3 * extent * std::sin(phis[j]),
                                  3 * extent * std::cos(phis[j]), 3 * extent * std::sin(phis[j]));
   std::string cone;
-  // The GIR cone |P_cp| = GIR P_n cut by the restitution plane: rho = GIR R / (a1 + GIR (b1 cos + c1 sin)).
-  const double gir = case_gir(p);
+  // The GIR cone |P_cp| = GIR P_n cut by the restitution plane.
   for (int i = 0; i <= 360; ++i) {
-    const double th = i * M_PI / 180, den = K(0, 0) + gir * (K(0, 1) * std::cos(th) + K(0, 2) * std::sin(th));
-    if (den <= 0) {
+    const double th = i * M_PI / 180;
+    const std::optional<double> rho = gir_cone_radius(c.p, f, th);
+    if (!rho) {
       cone += "\n";
       continue;
     }
-    cone += fmt::format("{:.17g},{:.17g}\n", gir * R / den / s * std::cos(th), gir * R / den / s * std::sin(th));
+    cone += fmt::format("{:.17g},{:.17g}\n", *rho / s * std::cos(th), *rho / s * std::sin(th));
   }
   if (cone.find(',') == std::string::npos) cone.clear();
   std::string gp = header_lines(c, "contact-plane view on the restitution plane (eps = " + c.spec.restitution.text + ")");
@@ -176,37 +169,33 @@ void contact_plane_view(Context& c) {
 // (for pc-crash the phi_FI plane, for Wach the phi plane): Figures 4 right and 7.
 void solution_plane_view(Context& c, std::size_t k) {
   const auto& p = c.p;
-  const auto& K = p.K;
+  const auto& f = c.fig.planes[k];
   const double s = c.f.impulse;
-  const V3& P = c.a.solutions[k].impulse.P_C;
-  const double len = std::hypot(P.y(), P.z());
-  const PlaneAxes<double> ax = len > 0 ? PlaneAxes<double>{P.y() / len, P.z() / len} : PlaneAxes<double>{1, 0};
-  const V3 n = V3::UnitX(), u = ax.u(), w = ax.w();
-  const Point sol{label(c.spec.strategies[k]), u.dot(P) / s, P.x() / s};
-  const double cir = direct::DirectEngine::plane_ratio(p, ax, p.restitution, "CIR");
-  const double gir = direct::DirectEngine::plane_ratio(p, ax, 0.0, "GIR");
-  const double ymax = 1.6 * std::max(sol.y, p.m_prime * (1 + p.restitution) * p.V_ri.x() / K(0, 0) / s);
+  const Point sol{label(c.spec.strategies[k]), f.P_u / s, f.P_n / s};
+  const double cir = f.cir, gir = f.gir;
+  const double ymax = 1.6 * std::max(sol.y, p.m_prime * (1 + p.restitution) * p.V_ri.x() / p.K(0, 0) / s);
   const double xs[] = {sol.x, gir * ymax, cir * ymax, 0.0};
   double xmin = 0, xmax = 0;
   for (double x : xs) xmin = std::min(xmin, x), xmax = std::max(xmax, x);
   const double pad = xmax > xmin ? 0.15 * (xmax - xmin) : 0.15 * ymax;  // no in-plane impulse: frame by P_n
-  // Lines of the plane, in (x, y) = (P_u, P_n): coefficients (K_row . u, K_row . n).
-  auto line = [&](const V3& row, double rhs) { return line_segment(row.dot(u), row.dot(n), rhs / s, 10 * (ymax + xmax - xmin)); };
-  const V3 Kn = K.row(0).transpose(), Ku = K.transpose() * u, Kw = K.transpose() * w;
+  const double extent = 10 * (ymax + xmax - xmin);
   auto ray = [&](double mu) { return fmt::format("0,0\n{:.17g},{:.17g}\n", mu * 10 * ymax, 10 * ymax); };
   const std::string name = fmt::format("solution_plane_{}", k + 1);
-  std::string gp = header_lines(c, fmt::format("solution plane of {} (angle {:.4g} deg from t towards z)", label(c.spec.strategies[k]),
-                                                     std::atan2(ax.s, ax.c) * 180 / M_PI));
+  // The title states the plane's angle and every warning of the solution, as `solve` reports them.
+  std::vector<std::string> warnings;
+  for (const auto& w : c.a.solutions[k].warnings) warnings.push_back("warning: " + w.text);
+  std::string gp = header_lines(c, fmt::format("solution plane of {} (angle {:.6g} deg from t towards z)", label(c.spec.strategies[k]),
+                                               f.angle_deg), 900, 700, warnings);
   gp += fmt::format("set xlabel {}\nset ylabel {}\n", gnuplot_string("in-plane impulse P_u [" + c.imp_unit + "]"),
                     gnuplot_string("P_n [" + c.imp_unit + "]"));
   gp += fmt::format("set xrange [{:.17g}:{:.17g}]\nset yrange [0:{:.17g}]\n", xmin - pad, xmax + pad, ymax);
-  gp += series(c, "plot", name, {{"lw 2 lc rgb '#000000'", "maximum compression", line(Kn, p.m_prime * p.V_ri.x())},
+  gp += series(c, "plot", name, {{"lw 2 lc rgb '#000000'", "maximum compression", trace(f.max_compression, s, extent)},
                                  {"dt 2 lc rgb '#000000'", "restitution (eps = " + c.spec.restitution.text + ")",
-                                  line(Kn, p.m_prime * (1 + p.restitution) * p.V_ri.x())},
-                                 {"lw 2 lc rgb '#1f77b4'", "no sliding along the plane", line(Ku, p.m_prime * u.dot(p.V_ri))},
-                                 {"lw 2 lc rgb '#ff7f0e'", "no sliding across the plane", line(Kw, p.m_prime * w.dot(p.V_ri))},
-                                 {"dt 3 lc rgb '#2ca02c'", fmt::format("CIR = {:.4g}", cir), ray(cir)},
-                                 {"dt 4 lc rgb '#d62728'", fmt::format("GIR = {:.4g}", gir), ray(gir)}});
+                                  trace(f.restitution, s, extent)},
+                                 {"lw 2 lc rgb '#1f77b4'", "no sliding along the plane", trace(f.no_sliding_along, s, extent)},
+                                 {"lw 2 lc rgb '#ff7f0e'", "no sliding across the plane", trace(f.no_sliding_across, s, extent)},
+                                 {"dt 3 lc rgb '#2ca02c'", fmt::format("CIR = {:.6g}", cir), ray(cir)},
+                                 {"dt 4 lc rgb '#d62728'", fmt::format("GIR = {:.6g}", gir), ray(gir)}});
   gp += points_file(c.dir, name, "label,P_u,P_n", {sol}, false) + "\n";
   draw(c, name, gp);
 }
@@ -214,9 +203,10 @@ void solution_plane_view(Context& c, std::size_t k) {
 // The three fundamental planes, the restitution plane, the Critical Impulse Line and the solutions in
 // impulse space (P_t, P_z, P_n): Figures 2-3 left.
 void impulse_space_view(Context& c) {
-  const auto& p = c.p;
   const double s = c.f.impulse;
-  const V3 P0 = c.a.space.P_max_loss, cil = critical_line_point(p), d = c.a.space.cil_direction;
+  const V3 P0 = c.a.space.P_max_loss, d = c.a.space.cil_direction;
+  // The restitution plane is drawn around the Critical Impulse Line's point on it, or the Full Impact.
+  const V3 on_restitution = c.fig.contact.no_sliding ? *c.fig.contact.no_sliding : c.fig.contact.full_impact;
   const double L = 0.5 * P0.norm();
   // A square patch of a plane (unit normal nrm) centred at `centre`, as a mesh of lines.
   auto patch = [&](const V3& nrm, const V3& centre) {
@@ -250,7 +240,7 @@ void impulse_space_view(Context& c) {
                                              {"lc rgb '#1f77b4'", "t no-sliding plane", patch(plane(1), P0)},
                                              {"lc rgb '#ff7f0e'", "z no-sliding plane", patch(plane(2), P0)},
                                              // the case's restitution plane, through the CIL point
-                                             {"dt 2 lc rgb '#7f7f7f'", "restitution plane", patch(plane(0), cil)},
+                                             {"dt 2 lc rgb '#7f7f7f'", "restitution plane", patch(plane(0), on_restitution)},
                                              {"lw 3 lc rgb '#d62728'", "Critical Impulse Line", cil_line}});
   gp += points_file(c.dir, "impulse_space", "label,P_t,P_z,P_n", pts, true) + "\n";
   draw(c, "impulse_space", gp);
@@ -259,7 +249,7 @@ void impulse_space_view(Context& c) {
 // Post-impact sliding along t and z, swerve and energy loss against mu (0 to 1.5 GIR) and against eps.
 void sweeps(Context& c, std::size_t k) {
   const io::StrategySpec& spec = c.spec.strategies[k];
-  const double gir = case_gir(c.p);
+  const double gir = c.fig.contact.gir;
   auto with_mu = [&](double mu) -> Strategy<double> {
     switch (spec.kind) {
       case io::StrategySpec::Kind::pc_crash: return PcCrash<double>{mu};
@@ -333,7 +323,8 @@ std::string plot(const io::CaseSpec& spec, const PlotOptions& o) {
   const Scene<double> scene = io::to_scene<double>(spec);
   const Analysis<double> a = analyze(scene, io::to_strategies<double>(spec), o.engine);
   const OutputDir dir(o.out_dir);
-  Context c{spec, o, dir, scene, a, problem_of(a, scene.restitution), unit_factors<double>(spec.units),
+  const Figures<double> fig = figures(a);
+  Context c{spec, o, dir, scene, a, a.problem(), fig, unit_factors<double>(spec.units),
             io::unit_label(spec.units, "impulse"), io::unit_label(spec.units, "velocity"), io::unit_label(spec.units, "energy"), "", ""};
   contact_plane_view(c);
   for (std::size_t k = 0; k < a.solutions.size(); ++k) solution_plane_view(c, k);

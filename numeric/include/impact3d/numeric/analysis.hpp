@@ -18,17 +18,15 @@
 
 namespace impact3d {
 
+// The Problem it solved (m', K, V_ri, eps, kappa, amplification), and what the analysis adds to it.
 template <typename Scalar>
-struct Analysis {
+struct Analysis : Problem<Scalar> {
   Engine engine;
-  Scalar m_prime;
-  Mat3<Scalar> K;
-  Scalar kappa;                       // 2-norm condition number of K
-  Scalar amplification;               // of the inputs' rounding into the impulse (rounding.hpp)
   std::array<Mat3<Scalar>, 2> T;      // the paper's T_i = R_CB_i
-  Vec3<Scalar> V_ri;                  // contact axes
   ImpulseSpace<Scalar> space;
   std::vector<Solution<Scalar>> solutions;
+
+  const Problem<Scalar>& problem() const { return *this; }
 };
 
 template <typename Scalar>
@@ -61,17 +59,12 @@ ImpulseSolution<Scalar> solve_impulse(const Problem<Scalar>& p, const Strategy<S
 
 template <typename E, typename Scalar>
 Analysis<Scalar> analyze_with(const Scene<Scalar>& s, const std::vector<Strategy<Scalar>>& strategies, Engine engine) {
-  const Problem<Scalar> p = make_problem<E>(s);
-  if (!(p.V_ri.x() > Scalar(0)))
-    throw SolveError("the bodies are not approaching at the impulse centre (V_rn <= 0)");
   Analysis<Scalar> a;
+  static_cast<Problem<Scalar>&>(a) = make_problem<E>(s);
+  const Problem<Scalar>& p = a.problem();
+  require_approaching(p);
   a.engine = engine;
-  a.m_prime = p.m_prime;
-  a.K = p.K;
-  a.kappa = p.kappa;
-  a.amplification = p.amplification;
   a.T = {R_CB(s, 0), R_CB(s, 1)};
-  a.V_ri = p.V_ri;
   a.space = impulse_space<E>(p);
   for (std::size_t k = 0; k < strategies.size(); ++k) {
     try {
@@ -89,19 +82,32 @@ Analysis<Scalar> analyze_with(const Scene<Scalar>& s, const std::vector<Strategy
   return a;
 }
 
-// The problem an analysis solved (m', K, V_ri, kappa), with the scene's restitution: what further
-// solves of the same collision (figures, sweeps of the constraints) start from.
-template <typename Scalar>
-Problem<Scalar> problem_of(const Analysis<Scalar>& a, const Scalar& restitution) {
-  return {a.m_prime, a.K, a.V_ri, restitution, a.kappa, a.amplification};
-}
-
 // Throws SolveError when the bodies do not approach or a strategy's constraints admit no impulse.
 template <typename Scalar>
 Analysis<Scalar> analyze(const Scene<Scalar>& s, const std::vector<Strategy<Scalar>>& strategies,
                          Engine engine = Engine::generated) {
   if (engine == Engine::direct) return analyze_with<direct::DirectEngine>(s, strategies, engine);
   return analyze_with<GeneratedEngine>(s, strategies, engine);
+}
+
+// The impulse-space geometry of an analysis's figures, by the engine the analysis used.
+template <typename Scalar>
+struct Figures {
+  ContactPlaneFigure<Scalar> contact;
+  std::vector<SolutionPlaneFigure<Scalar>> planes;  // one per solution
+};
+
+template <typename E, typename Scalar>
+Figures<Scalar> figures_with(const Analysis<Scalar>& a) {
+  Figures<Scalar> f{contact_plane_figure<E>(a.problem()), {}};
+  for (const auto& s : a.solutions) f.planes.push_back(solution_plane_figure<E>(a.problem(), s.impulse));
+  return f;
+}
+
+template <typename Scalar>
+Figures<Scalar> figures(const Analysis<Scalar>& a) {
+  if (a.engine == Engine::direct) return figures_with<direct::DirectEngine>(a);
+  return figures_with<GeneratedEngine>(a);
 }
 
 }  // namespace impact3d

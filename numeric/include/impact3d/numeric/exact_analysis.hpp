@@ -39,7 +39,7 @@ struct ExactAnalysis {
 template <typename E>
 ExactAnalysis exact_analyze_with(const Scene<rational>& s, const std::vector<Strategy<rational>>& strategies) {
   const Problem<rational> p = make_problem<E>(s);
-  if (!(p.V_ri.x() > 0)) throw SolveError("the bodies are not approaching at the impulse centre (V_rn <= 0)");
+  require_approaching(p);
   ExactAnalysis a{p.m_prime, p.K, p.V_ri, E::full_impact(p, rational(0)), {}};
   for (std::size_t k = 0; k < strategies.size(); ++k) {
     ExactResult r;

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "impact3d/numeric/strategy.hpp"
 #include "impact3d/numeric/types.hpp"
 
 namespace impact3d {
@@ -33,12 +34,10 @@ struct Problem {
   }
 };
 
-// Unit vectors of a solution plane at angle phi from t towards z: u in the plane, w normal to it.
+// The bodies approach at the impulse centre (V_rn > 0), or there is no impact to solve.
 template <typename Scalar>
-struct PlaneAxes {
-  Scalar c, s;  // cos phi, sin phi
-  Vec3<Scalar> u() const { return Vec3<Scalar>(Scalar(0), c, s); }
-  Vec3<Scalar> w() const { return Vec3<Scalar>(Scalar(0), -s, c); }
-};
+void require_approaching(const Problem<Scalar>& p) {
+  if (!(p.V_ri.x() > Scalar(0))) throw SolveError("the bodies are not approaching at the impulse centre (V_rn <= 0)");
+}
 
 }  // namespace impact3d

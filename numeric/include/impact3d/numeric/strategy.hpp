@@ -77,7 +77,8 @@ struct ImpulseSolution {
   Regime regime = Regime::as_given;
   std::optional<Scalar> mu, mu_t, mu_z;                           // ratios actually used
   std::optional<Scalar> gir, cir, mu_t_critical, mu_z_critical;  // limits compared against
-  std::optional<Scalar> plane_angle_deg;  // phi_FI (eq 15) or Wach's phi (eq 21), from t towards z
+  std::optional<PlaneAxes<Scalar>> plane;  // the solution plane used: phi_FI (eq 15) or Wach's phi (eq 21)
+  std::optional<Scalar> plane_angle_deg;    // its angle from t towards z
   std::vector<Warning> warnings;
 };
 

@@ -33,6 +33,14 @@ Scalar degrees(const Scalar& rad) {
   return rad * Scalar(180) / pi<Scalar>();
 }
 
+// Unit vectors of a solution plane at angle phi from t towards z: u in the plane, w normal to it.
+template <typename Scalar>
+struct PlaneAxes {
+  Scalar c, s;  // cos phi, sin phi
+  Vec3<Scalar> u() const { return Vec3<Scalar>(Scalar(0), c, s); }
+  Vec3<Scalar> w() const { return Vec3<Scalar>(Scalar(0), -s, c); }
+};
+
 // x = J^-1 b for a symmetric positive definite J: Cholesky for floating types, LU for exact ones.
 template <typename Scalar, typename Rhs>
 auto spd_solve(const Eigen::Matrix<Scalar, 3, 3>& J, const Rhs& b) {

@@ -43,6 +43,7 @@ PlaneAxes<Scalar> solution_plane(const Problem<Scalar>& p, const Scalar& d_t, co
     out.warnings.push_back({WarningCode::plane_undefined, undefined});
   else
     ax = {Scalar(d_t / length), Scalar(d_z / length)};
+  out.plane = ax;
   if constexpr (!is_exact_v<Scalar>) {  // an angle is not rational; the exact report takes it at 100 digits
     using std::atan2;
     out.plane_angle_deg = degrees(Scalar(atan2(ax.s, ax.c)));
