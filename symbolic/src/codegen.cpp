@@ -193,7 +193,7 @@ std::set<int> choose_hoisted(const Dag& dag, const std::vector<int>& roots) {
 
 }  // namespace
 
-std::string print_kernel(const Kernel& k) {
+PrintedKernel print_kernel(const Kernel& k) {
   Dag dag;
   std::vector<int> roots;
   for (const auto& [name, e] : k.locals) roots.push_back(dag.intern(e));
@@ -201,6 +201,7 @@ std::string print_kernel(const Kernel& k) {
   CodePrinter p(dag, k.symbol_code);
   p.to_hoist = choose_hoisted(dag, roots);
 
+  PrintedKernel r;
   std::string body;
   int next = 0;
   // Post-order: a temporary is defined after every temporary it uses.
@@ -211,17 +212,23 @@ std::string print_kernel(const Kernel& k) {
       const std::string text = p.expression(id);
       const std::string name = "t" + std::to_string(next++);
       body += "  const Scalar " + name + " = " + text + ";\n";
+      ++r.intermediate_terms;
       p.hoisted.emplace(id, name);
     }
   };
   std::string assigns;
   for (std::size_t i = 0; i < roots.size(); ++i) {
     emit(roots[i]);
-    if (i < k.locals.size())
+    if (i < k.locals.size()) {
       body += "  const Scalar " + k.locals[i].first + " = " + p.expression(roots[i]) + ";\n";
-    else
+      ++r.intermediate_terms;
+    } else {
       assigns += "  " + k.outputs[i - k.locals.size()].first + " = " + p.expression(roots[i]) + ";\n";
+      ++r.output_terms;
+    }
   }
+  r.operations = p.ops;
+  r.calls = p.functions;
 
   std::string s = "/// " + k.doc + "\n///\n/// Args:\n";
   for (const auto& a : k.args) s += "///   " + a.decl.substr(a.decl.rfind(' ') + 1) + ": " + a.doc + "\n";
@@ -232,7 +239,8 @@ std::string print_kernel(const Kernel& k) {
   s += ") {\n";
   for (const auto& f : p.functions) s += "  using std::" + f + ";\n";
   s += body + "  " + k.returns + " out;\n" + assigns + "  return out;\n}\n";
-  return s;
+  r.text = s;
+  return r;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,13 +13,14 @@
 namespace impact3d::symbolic {
 
 struct KernelArg {
-  std::string decl;  // "const Mat3<Scalar>& K"
-  std::string doc;   // "coefficient matrix of eq 9 (3x3)"
+  std::string decl;  // "const Eigen::Matrix<Scalar, 3, 3>& K"
+  std::string doc;   // "coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3"
 };
 
 struct Kernel {
   std::string name;
   std::string doc;                                      // what it computes, from which equations
+  std::vector<std::string> equations;                   // audit ids it evaluates: "eq24", "A.c3"
   std::string returns;                                  // C++ return type, e.g. "Vec3<Scalar>"
   std::string returns_doc;
   std::vector<KernelArg> args;
@@ -28,8 +30,17 @@ struct Kernel {
   std::vector<std::pair<std::string, GiNaC::ex>> outputs;  // "out(0)" -> expression
 };
 
+struct PrintedKernel {
+  std::string text;              // the function template with its docstring
+  long operations = 0;           // additions, multiplications, divisions and calls
+  int intermediate_terms = 0;    // named locals and hoisted temporaries
+  int output_terms = 0;
+  std::set<std::string> calls;   // math functions called (through using std::f)
+};
+
 // The whole function template, with its docstring and operation count.
-std::string print_kernel(const Kernel& k);
+PrintedKernel print_kernel(const Kernel& k);
+
 
 // LaTeX of one expression, operands in canonical order; symbols renamed through `names`.
 std::string latex(const GiNaC::ex& e, const std::map<std::string, std::string>& names);

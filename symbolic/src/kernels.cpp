@@ -37,6 +37,7 @@ ex plane_local(const ClosedForms& c, const char* name) {
 Kernel general_coefficient_matrix(const Derivation& d) {
   Kernel k;
   k.name = "coefficient_matrix";
+  k.equations = {"eq9"};
   k.doc = "K of eq 9 from full inertia tensors and general rotations: I + m' sum_i T_i [r_i]x^T J_i^-1 [r_i]x T_i^T "
           "(derived as -m' d(V_rf - V_ri)/dP from eqs 2, 4, 6, 7).";
   k.returns = "Eigen::Matrix<Scalar, 3, 3>";
@@ -81,6 +82,10 @@ Kernel general_coefficient_matrix(const Derivation& d) {
 Kernel appendix_a_coefficient_matrix() {
   Kernel k;
   k.name = "coefficient_matrix_appendix_a";
+  k.equations = {"eq9", "A.A", "A.B", "A.C"};
+  for (int i = 1; i <= 8; ++i) k.equations.push_back("A.f" + std::to_string(i));
+  for (const char* c : {"a", "b", "c"})
+    for (int i = 1; i <= 3; ++i) k.equations.push_back("A." + std::string(c) + std::to_string(i));
   k.doc = "K of eq 9 under the paper's Appendix A assumptions (diagonal inertia tensors, level vehicles, horizontal "
           "normal), from the printed A, B, C, f1..f8 and a1..c3 with c3 corrected (audit A.c3).";
   k.returns = "Eigen::Matrix<Scalar, 3, 3>";
@@ -124,6 +129,7 @@ Kernel appendix_a_coefficient_matrix() {
 Kernel full_impact(const ClosedForms& c) {
   Kernel k;
   k.name = "full_impact";
+  k.equations = {"eq10", "eq11", "eq12"};
   k.doc = "Full Impact impulse, eqs 10-12: K P = m' (1 + e) V (at e = 0, the maximum-energy-loss impulse).";
   k.returns = "Eigen::Matrix<Scalar, 3, 1>";
   k.returns_doc = "P = (P_n, P_t, P_z) on vehicle 1, contact axes, 3";
@@ -142,6 +148,7 @@ Kernel full_impact(const ClosedForms& c) {
 Kernel plane_impulse(const ClosedForms& c) {
   Kernel k;
   k.name = "plane_impulse";
+  k.equations = {"eq17", "eq18", "eq22"};
   k.doc = "Impulse on a solution plane through n at (c, s) with P_CP = mu P_n and none across it: eqs 17-18 "
           "(PC-Crash Sliding Impact at phi_FI, Wach's eq 22 at phi).";
   k.returns = "Eigen::Matrix<Scalar, 3, 1>";
@@ -163,6 +170,7 @@ Kernel plane_impulse(const ClosedForms& c) {
 Kernel plane_ratio(const ClosedForms& c, bool generalized) {
   Kernel k;
   k.name = generalized ? "plane_generalized_ratio" : "plane_critical_ratio";
+  k.equations = generalized ? std::vector<std::string>{"eq14", "eq17", "eq20"} : std::vector<std::string>{"eq17", "eq19"};
   k.doc = generalized ? "Generalized impulse ratio of a solution plane, eq 20 (eq 19 at eps = 0)."
                       : "Critical impulse ratio of a solution plane, eq 19: sliding along the plane stops at separation.";
   k.returns = "Scalar";
@@ -182,6 +190,7 @@ Kernel plane_ratio(const ClosedForms& c, bool generalized) {
 Kernel brach_impulse(const ClosedForms& c) {
   Kernel k;
   k.name = "brach_impulse";
+  k.equations = {"eq24"};
   k.doc = "Impulse with independent ratios P_t = mu_t P_n, P_z = mu_z P_n: eq 24.";
   k.returns = "Eigen::Matrix<Scalar, 3, 1>";
   k.returns_doc = "P = (P_n, P_t, P_z) on vehicle 1, contact axes, 3";
@@ -196,6 +205,7 @@ Kernel brach_critical(const ClosedForms& c, char which) {
   k.symbol_code = coefficient_symbols();
   if (which == 't') {
     k.name = "brach_critical_t";
+    k.equations = {"eq25"};
     k.doc = "Critical mu_t given mu_z, eq 25: sliding along t stops at separation.";
     k.returns = "Scalar";
     k.returns_doc = "mu_tC";
@@ -203,6 +213,7 @@ Kernel brach_critical(const ClosedForms& c, char which) {
     k.outputs = {{"out", c.brach_mu_t_critical}};
   } else if (which == 'z') {
     k.name = "brach_critical_z";
+    k.equations = {"eq26"};
     k.doc = "Critical mu_z given mu_t, eq 26: sliding along z stops at separation.";
     k.returns = "Scalar";
     k.returns_doc = "mu_zC";
@@ -210,6 +221,7 @@ Kernel brach_critical(const ClosedForms& c, char which) {
     k.outputs = {{"out", c.brach_mu_z_critical}};
   } else {
     k.name = "brach_critical_both";
+    k.equations = {"eq27"};
     k.doc = "Both ratios critical, eq 27: no sliding at separation (on the Critical Impulse Line).";
     k.returns = "Eigen::Matrix<Scalar, 2, 1>";
     k.returns_doc = "(mu_tC, mu_zC), 2";
