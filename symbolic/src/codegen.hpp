@@ -1,5 +1,7 @@
 // C++ kernels and LaTeX from canonical expressions: common subexpressions hoisted into temporaries named
-// in order of first use, constants as exact Scalar(p)/Scalar(q), math through using-declarations.
+// in order of first use, constants as exact Scalar(p)/Scalar(q), math through using-declarations. The
+// layout is SymForce's: docstring with Args and Returns and their shapes, one parameter a line, the body
+// in sections (intermediate terms, output terms), statements wrapped at 120 columns.
 #pragma once
 
 #include <map>
@@ -14,7 +16,7 @@ namespace impact3d::symbolic {
 
 struct KernelArg {
   std::string decl;  // "const Eigen::Matrix<Scalar, 3, 3>& K"
-  std::string doc;   // "coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3"
+  std::string doc;   // "coefficient matrix of eq 9"; the docstring adds the shape from decl
 };
 
 struct Kernel {
@@ -41,6 +43,8 @@ struct PrintedKernel {
 // The whole function template, with its docstring and operation count.
 PrintedKernel print_kernel(const Kernel& k);
 
+// "3x3", "3x1" for an Eigen::Matrix<Scalar, R, C> in a declaration or return type, "scalar" for Scalar.
+std::string shape_of(const std::string& type);
 
 // LaTeX of one expression, operands in canonical order; symbols renamed through `names`.
 std::string latex(const GiNaC::ex& e, const std::map<std::string, std::string>& names);

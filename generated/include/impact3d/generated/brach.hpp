@@ -12,17 +12,25 @@ namespace impact3d::generated {
 /// Impulse with independent ratios P_t = mu_t P_n, P_z = mu_z P_n: eq 24.
 ///
 /// Args:
-///   K: coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3
-///   m_prime: m' = m1 m2 / (m1 + m2)
-///   e: restitution eps
-///   V: initial relative velocity at the impulse centre (n, t, z), 3
-///   mu_t: impulse ratio along t
-///   mu_z: impulse ratio along z
-/// Returns: P = (P_n, P_t, P_z) on vehicle 1, contact axes, 3
+///   K (3x3): coefficient matrix of eq 9, rows (a_k, b_k, c_k)
+///   m_prime (scalar): m' = m1 m2 / (m1 + m2)
+///   e (scalar): restitution eps
+///   V (3x1): initial relative velocity at the impulse centre (n, t, z)
+///   mu_t (scalar): impulse ratio along t
+///   mu_z (scalar): impulse ratio along z
+/// Returns (3x1): P = (P_n, P_t, P_z) on vehicle 1, contact axes
 /// Operations: 24 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Eigen::Matrix<Scalar, 3, 1> brach_impulse(const Eigen::Matrix<Scalar, 3, 3>& K, const Scalar& m_prime, const Scalar& e, const Eigen::Matrix<Scalar, 3, 1>& V, const Scalar& mu_t, const Scalar& mu_z) {
+Eigen::Matrix<Scalar, 3, 1> brach_impulse(const Eigen::Matrix<Scalar, 3, 3>& K,
+                                          const Scalar& m_prime,
+                                          const Scalar& e,
+                                          const Eigen::Matrix<Scalar, 3, 1>& V,
+                                          const Scalar& mu_t,
+                                          const Scalar& mu_z) {
+  // Intermediate terms (1)
   const Scalar t0 = Scalar(1) / (K(0, 1) * mu_t + K(0, 2) * mu_z + K(0, 0));
+
+  // Output terms (3)
   Eigen::Matrix<Scalar, 3, 1> out;
   out(0) = t0 * (V(0) * e * m_prime + V(0) * m_prime);
   out(1) = t0 * (V(0) * e * m_prime * mu_t + V(0) * m_prime * mu_t);
@@ -33,49 +41,74 @@ Eigen::Matrix<Scalar, 3, 1> brach_impulse(const Eigen::Matrix<Scalar, 3, 3>& K, 
 /// Critical mu_t given mu_z, eq 25: sliding along t stops at separation.
 ///
 /// Args:
-///   K: coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3
-///   e: restitution eps
-///   V: initial relative velocity at the impulse centre (n, t, z), 3
-///   mu_z: impulse ratio along z
-/// Returns: mu_tC
+///   K (3x3): coefficient matrix of eq 9, rows (a_k, b_k, c_k)
+///   e (scalar): restitution eps
+///   V (3x1): initial relative velocity at the impulse centre (n, t, z)
+///   mu_z (scalar): impulse ratio along z
+/// Returns (scalar): mu_tC
 /// Operations: 23 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Scalar brach_critical_t(const Eigen::Matrix<Scalar, 3, 3>& K, const Scalar& e, const Eigen::Matrix<Scalar, 3, 1>& V, const Scalar& mu_z) {
+Scalar brach_critical_t(const Eigen::Matrix<Scalar, 3, 3>& K,
+                        const Scalar& e,
+                        const Eigen::Matrix<Scalar, 3, 1>& V,
+                        const Scalar& mu_z) {
+  // Intermediate terms (0)
+
+  // Output terms (1)
   Scalar out;
-  out = -(V(0) * K(1, 0) + V(0) * K(1, 0) * e + V(0) * K(1, 2) * e * mu_z + V(0) * K(1, 2) * mu_z - V(1) * K(0, 0) - V(1) * K(0, 2) * mu_z) / (V(0) * K(1, 1) + V(0) * K(1, 1) * e - V(1) * K(0, 1));
+  out = -(V(0) * K(1, 0) + V(0) * K(1, 0) * e + V(0) * K(1, 2) * e * mu_z + V(0) * K(1, 2) * mu_z - V(1) * K(0, 0) -
+      V(1) * K(0, 2) * mu_z) / (V(0) * K(1, 1) + V(0) * K(1, 1) * e - V(1) * K(0, 1));
   return out;
 }
 
 /// Critical mu_z given mu_t, eq 26: sliding along z stops at separation.
 ///
 /// Args:
-///   K: coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3
-///   e: restitution eps
-///   V: initial relative velocity at the impulse centre (n, t, z), 3
-///   mu_t: impulse ratio along t
-/// Returns: mu_zC
+///   K (3x3): coefficient matrix of eq 9, rows (a_k, b_k, c_k)
+///   e (scalar): restitution eps
+///   V (3x1): initial relative velocity at the impulse centre (n, t, z)
+///   mu_t (scalar): impulse ratio along t
+/// Returns (scalar): mu_zC
 /// Operations: 23 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Scalar brach_critical_z(const Eigen::Matrix<Scalar, 3, 3>& K, const Scalar& e, const Eigen::Matrix<Scalar, 3, 1>& V, const Scalar& mu_t) {
+Scalar brach_critical_z(const Eigen::Matrix<Scalar, 3, 3>& K,
+                        const Scalar& e,
+                        const Eigen::Matrix<Scalar, 3, 1>& V,
+                        const Scalar& mu_t) {
+  // Intermediate terms (0)
+
+  // Output terms (1)
   Scalar out;
-  out = -(V(0) * K(2, 0) + V(0) * K(2, 0) * e + V(0) * K(2, 1) * e * mu_t + V(0) * K(2, 1) * mu_t - V(2) * K(0, 0) - V(2) * K(0, 1) * mu_t) / (V(0) * K(2, 2) + V(0) * K(2, 2) * e - V(2) * K(0, 2));
+  out = -(V(0) * K(2, 0) + V(0) * K(2, 0) * e + V(0) * K(2, 1) * e * mu_t + V(0) * K(2, 1) * mu_t - V(2) * K(0, 0) -
+      V(2) * K(0, 1) * mu_t) / (V(0) * K(2, 2) + V(0) * K(2, 2) * e - V(2) * K(0, 2));
   return out;
 }
 
 /// Both ratios critical, eq 27: no sliding at separation (on the Critical Impulse Line).
 ///
 /// Args:
-///   K: coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3
-///   e: restitution eps
-///   V: initial relative velocity at the impulse centre (n, t, z), 3
-/// Returns: (mu_tC, mu_zC), 2
+///   K (3x3): coefficient matrix of eq 9, rows (a_k, b_k, c_k)
+///   e (scalar): restitution eps
+///   V (3x1): initial relative velocity at the impulse centre (n, t, z)
+/// Returns (2x1): (mu_tC, mu_zC)
 /// Operations: 78 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Eigen::Matrix<Scalar, 2, 1> brach_critical_both(const Eigen::Matrix<Scalar, 3, 3>& K, const Scalar& e, const Eigen::Matrix<Scalar, 3, 1>& V) {
-  const Scalar t0 = Scalar(1) / (V(0) * K(1, 1) * K(2, 2) + V(0) * K(1, 1) * K(2, 2) * e - V(0) * K(2, 1) * K(1, 2) - V(0) * K(2, 1) * K(1, 2) * e - V(1) * K(0, 1) * K(2, 2) + V(1) * K(2, 1) * K(0, 2) + V(2) * K(0, 1) * K(1, 2) - V(2) * K(1, 1) * K(0, 2));
+Eigen::Matrix<Scalar, 2, 1> brach_critical_both(const Eigen::Matrix<Scalar, 3, 3>& K,
+                                                const Scalar& e,
+                                                const Eigen::Matrix<Scalar, 3, 1>& V) {
+  // Intermediate terms (1)
+  const Scalar t0 = Scalar(1) / (V(0) * K(1, 1) * K(2, 2) + V(0) * K(1, 1) * K(2, 2) * e - V(0) * K(2, 1) * K(1, 2) -
+      V(0) * K(2, 1) * K(1, 2) * e - V(1) * K(0, 1) * K(2, 2) + V(1) * K(2, 1) * K(0, 2) + V(2) * K(0, 1) * K(1, 2) -
+      V(2) * K(1, 1) * K(0, 2));
+
+  // Output terms (2)
   Eigen::Matrix<Scalar, 2, 1> out;
-  out(0) = -t0 * (V(0) * K(1, 0) * K(2, 2) + V(0) * K(1, 0) * K(2, 2) * e - V(0) * K(2, 0) * K(1, 2) - V(0) * K(2, 0) * K(1, 2) * e - V(1) * K(0, 0) * K(2, 2) + V(1) * K(2, 0) * K(0, 2) + V(2) * K(0, 0) * K(1, 2) - V(2) * K(1, 0) * K(0, 2));
-  out(1) = t0 * (V(0) * K(1, 0) * K(2, 1) + V(0) * K(1, 0) * K(2, 1) * e - V(0) * K(2, 0) * K(1, 1) - V(0) * K(2, 0) * K(1, 1) * e - V(1) * K(0, 0) * K(2, 1) + V(1) * K(2, 0) * K(0, 1) + V(2) * K(0, 0) * K(1, 1) - V(2) * K(1, 0) * K(0, 1));
+  out(0) = -t0 * (V(0) * K(1, 0) * K(2, 2) + V(0) * K(1, 0) * K(2, 2) * e - V(0) * K(2, 0) * K(1, 2) -
+      V(0) * K(2, 0) * K(1, 2) * e - V(1) * K(0, 0) * K(2, 2) + V(1) * K(2, 0) * K(0, 2) + V(2) * K(0, 0) * K(1, 2) -
+      V(2) * K(1, 0) * K(0, 2));
+  out(1) = t0 * (V(0) * K(1, 0) * K(2, 1) + V(0) * K(1, 0) * K(2, 1) * e - V(0) * K(2, 0) * K(1, 1) -
+      V(0) * K(2, 0) * K(1, 1) * e - V(1) * K(0, 0) * K(2, 1) + V(1) * K(2, 0) * K(0, 1) + V(2) * K(0, 0) * K(1, 1) -
+      V(2) * K(1, 0) * K(0, 1));
   return out;
 }
 

@@ -9,24 +9,33 @@
 
 namespace impact3d::generated {
 
-/// K of eq 9 from full inertia tensors and general rotations: I + m' sum_i T_i [r_i]x^T J_i^-1 [r_i]x T_i^T (derived as -m' d(V_rf - V_ri)/dP from eqs 2, 4, 6, 7).
+/// K of eq 9 from full inertia tensors and general rotations: I + m' sum_i T_i [r_i]x^T J_i^-1
+/// [r_i]x T_i^T (derived as -m' d(V_rf - V_ri)/dP from eqs 2, 4, 6, 7).
 ///
 /// Args:
-///   m_prime: m' = m1 m2 / (m1 + m2)
-///   J1: inertia tensor of vehicle 1 about its CG, body axes (symmetric; upper triangle read), 3x3
-///   J2: inertia tensor of vehicle 2, 3x3
-///   r1: impulse centre of vehicle 1 relative to its CG, body axes, 3
-///   r2: impulse centre of vehicle 2, 3
-///   T1: vehicle 1 -> contact axes rotation (the paper's T_1), 3x3
-///   T2: vehicle 2 -> contact axes rotation, 3x3
-/// Returns: K (symmetric), 3x3
+///   m_prime (scalar): m' = m1 m2 / (m1 + m2)
+///   J1 (3x3): inertia tensor of vehicle 1 about its CG, body axes (symmetric; upper triangle read)
+///   J2 (3x3): inertia tensor of vehicle 2
+///   r1 (3x1): impulse centre of vehicle 1 relative to its CG, body axes
+///   r2 (3x1): impulse centre of vehicle 2
+///   T1 (3x3): vehicle 1 -> contact axes rotation (the paper's T_1)
+///   T2 (3x3): vehicle 2 -> contact axes rotation
+/// Returns (3x3): K (symmetric)
 /// Operations: 353 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Eigen::Matrix<Scalar, 3, 3> coefficient_matrix(const Scalar& m_prime, const Eigen::Matrix<Scalar, 3, 3>& J1, const Eigen::Matrix<Scalar, 3, 3>& J2, const Eigen::Matrix<Scalar, 3, 1>& r1, const Eigen::Matrix<Scalar, 3, 1>& r2, const Eigen::Matrix<Scalar, 3, 3>& T1, const Eigen::Matrix<Scalar, 3, 3>& T2) {
+Eigen::Matrix<Scalar, 3, 3> coefficient_matrix(const Scalar& m_prime,
+                                               const Eigen::Matrix<Scalar, 3, 3>& J1,
+                                               const Eigen::Matrix<Scalar, 3, 3>& J2,
+                                               const Eigen::Matrix<Scalar, 3, 1>& r1,
+                                               const Eigen::Matrix<Scalar, 3, 1>& r2,
+                                               const Eigen::Matrix<Scalar, 3, 3>& T1,
+                                               const Eigen::Matrix<Scalar, 3, 3>& T2) {
+  // Intermediate terms (71)
   const Scalar t0 = J1(0, 1) * J1(0, 1);
   const Scalar t1 = J1(0, 2) * J1(0, 2);
   const Scalar t2 = J1(1, 2) * J1(1, 2);
-  const Scalar t3 = Scalar(1) / (t0 * J1(2, 2) + t1 * J1(1, 1) + t2 * J1(0, 0) - J1(0, 0) * J1(1, 1) * J1(2, 2) - Scalar(2) * J1(0, 1) * J1(0, 2) * J1(1, 2));
+  const Scalar t3 = Scalar(1) / (t0 * J1(2, 2) + t1 * J1(1, 1) + t2 * J1(0, 0) - J1(0, 0) * J1(1, 1) * J1(2, 2) -
+      Scalar(2) * J1(0, 1) * J1(0, 2) * J1(1, 2));
   const Scalar ji1_xx = t3 * (t2 - J1(1, 1) * J1(2, 2));
   const Scalar ji1_xy = t3 * (J1(0, 1) * J1(2, 2) - J1(0, 2) * J1(1, 2));
   const Scalar ji1_xz = -t3 * (J1(0, 1) * J1(1, 2) - J1(0, 2) * J1(1, 1));
@@ -36,7 +45,8 @@ Eigen::Matrix<Scalar, 3, 3> coefficient_matrix(const Scalar& m_prime, const Eige
   const Scalar t4 = J2(0, 1) * J2(0, 1);
   const Scalar t5 = J2(0, 2) * J2(0, 2);
   const Scalar t6 = J2(1, 2) * J2(1, 2);
-  const Scalar t7 = Scalar(1) / (t4 * J2(2, 2) + t5 * J2(1, 1) + t6 * J2(0, 0) - J2(0, 0) * J2(1, 1) * J2(2, 2) - Scalar(2) * J2(0, 1) * J2(0, 2) * J2(1, 2));
+  const Scalar t7 = Scalar(1) / (t4 * J2(2, 2) + t5 * J2(1, 1) + t6 * J2(0, 0) - J2(0, 0) * J2(1, 1) * J2(2, 2) -
+      Scalar(2) * J2(0, 1) * J2(0, 2) * J2(1, 2));
   const Scalar ji2_xx = t7 * (t6 - J2(1, 1) * J2(2, 2));
   const Scalar ji2_xy = t7 * (J2(0, 1) * J2(2, 2) - J2(0, 2) * J2(1, 2));
   const Scalar ji2_xz = -t7 * (J2(0, 1) * J2(1, 2) - J2(0, 2) * J2(1, 1));
@@ -61,8 +71,10 @@ Eigen::Matrix<Scalar, 3, 3> coefficient_matrix(const Scalar& m_prime, const Eige
   const Scalar t23 = t17 * ji2_zz - t18 * ji2_yz + t19 * ji2_xz;
   const Scalar t24 = t20 * r2(2) - t23 * r2(0);
   const Scalar t25 = t21 * r2(2) - t23 * r2(1);
-  const Scalar t26 = -((t13 * T1(1, 2) - t15 * T1(1, 1) + t16 * T1(1, 0)) * m_prime + (t22 * T2(1, 2) - t24 * T2(1, 1) + t25 * T2(1, 0)) * m_prime);
-  const Scalar t27 = -((t13 * T1(2, 2) - t15 * T1(2, 1) + t16 * T1(2, 0)) * m_prime + (t22 * T2(2, 2) - t24 * T2(2, 1) + t25 * T2(2, 0)) * m_prime);
+  const Scalar t26 = -((t13 * T1(1, 2) - t15 * T1(1, 1) + t16 * T1(1, 0)) * m_prime +
+      (t22 * T2(1, 2) - t24 * T2(1, 1) + t25 * T2(1, 0)) * m_prime);
+  const Scalar t27 = -((t13 * T1(2, 2) - t15 * T1(2, 1) + t16 * T1(2, 0)) * m_prime +
+      (t22 * T2(2, 2) - t24 * T2(2, 1) + t25 * T2(2, 0)) * m_prime);
   const Scalar t28 = T1(1, 0) * r1(1) - T1(1, 1) * r1(0);
   const Scalar t29 = T1(1, 0) * r1(2) - T1(1, 2) * r1(0);
   const Scalar t30 = T1(1, 1) * r1(2) - T1(1, 2) * r1(1);
@@ -81,7 +93,8 @@ Eigen::Matrix<Scalar, 3, 3> coefficient_matrix(const Scalar& m_prime, const Eige
   const Scalar t43 = t37 * ji2_zz - t38 * ji2_yz + t39 * ji2_xz;
   const Scalar t44 = t40 * r2(2) - t43 * r2(0);
   const Scalar t45 = t41 * r2(2) - t43 * r2(1);
-  const Scalar t46 = -((t33 * T1(2, 2) - t35 * T1(2, 1) + t36 * T1(2, 0)) * m_prime + (t42 * T2(2, 2) - t44 * T2(2, 1) + t45 * T2(2, 0)) * m_prime);
+  const Scalar t46 = -((t33 * T1(2, 2) - t35 * T1(2, 1) + t36 * T1(2, 0)) * m_prime +
+      (t42 * T2(2, 2) - t44 * T2(2, 1) + t45 * T2(2, 0)) * m_prime);
   const Scalar t47 = T1(2, 0) * r1(1) - T1(2, 1) * r1(0);
   const Scalar t48 = T1(2, 0) * r1(2) - T1(2, 2) * r1(0);
   const Scalar t49 = T1(2, 1) * r1(2) - T1(2, 2) * r1(1);
@@ -94,16 +107,22 @@ Eigen::Matrix<Scalar, 3, 3> coefficient_matrix(const Scalar& m_prime, const Eige
   const Scalar t56 = t53 * ji2_xz - t54 * ji2_xy + t55 * ji2_xx;
   const Scalar t57 = t53 * ji2_yz - t54 * ji2_yy + t55 * ji2_xy;
   const Scalar t58 = t53 * ji2_zz - t54 * ji2_yz + t55 * ji2_xz;
+
+  // Output terms (9)
   Eigen::Matrix<Scalar, 3, 3> out;
-  out(0, 0) = Scalar(1) - (t13 * T1(0, 2) - t15 * T1(0, 1) + t16 * T1(0, 0)) * m_prime - (t22 * T2(0, 2) - t24 * T2(0, 1) + t25 * T2(0, 0)) * m_prime;
+  out(0, 0) = Scalar(1) - (t13 * T1(0, 2) - t15 * T1(0, 1) + t16 * T1(0, 0)) * m_prime -
+      (t22 * T2(0, 2) - t24 * T2(0, 1) + t25 * T2(0, 0)) * m_prime;
   out(0, 1) = t26;
   out(0, 2) = t27;
   out(1, 0) = t26;
-  out(1, 1) = Scalar(1) - (t33 * T1(1, 2) - t35 * T1(1, 1) + t36 * T1(1, 0)) * m_prime - (t42 * T2(1, 2) - t44 * T2(1, 1) + t45 * T2(1, 0)) * m_prime;
+  out(1, 1) = Scalar(1) - (t33 * T1(1, 2) - t35 * T1(1, 1) + t36 * T1(1, 0)) * m_prime -
+      (t42 * T2(1, 2) - t44 * T2(1, 1) + t45 * T2(1, 0)) * m_prime;
   out(1, 2) = t46;
   out(2, 0) = t27;
   out(2, 1) = t46;
-  out(2, 2) = Scalar(1) - ((t50 * r1(1) - t51 * r1(0)) * T1(2, 2) - (t50 * r1(2) - t52 * r1(0)) * T1(2, 1) + (t51 * r1(2) - t52 * r1(1)) * T1(2, 0)) * m_prime - ((t56 * r2(1) - t57 * r2(0)) * T2(2, 2) - (t56 * r2(2) - t58 * r2(0)) * T2(2, 1) + (t57 * r2(2) - t58 * r2(1)) * T2(2, 0)) * m_prime;
+  out(2, 2) = Scalar(1) - ((t50 * r1(1) - t51 * r1(0)) * T1(2, 2) - (t50 * r1(2) - t52 * r1(0)) * T1(2, 1) +
+      (t51 * r1(2) - t52 * r1(1)) * T1(2, 0)) * m_prime - ((t56 * r2(1) - t57 * r2(0)) * T2(2, 2) -
+      (t56 * r2(2) - t58 * r2(0)) * T2(2, 1) + (t57 * r2(2) - t58 * r2(1)) * T2(2, 0)) * m_prime;
   return out;
 }
 

@@ -11,23 +11,33 @@
 
 namespace impact3d::generated {
 
-/// K of eq 9 under the paper's Appendix A assumptions (diagonal inertia tensors, level vehicles, horizontal normal), from the printed A, B, C, f1..f8 and a1..c3 with c3 corrected (audit A.c3).
+/// K of eq 9 under the paper's Appendix A assumptions (diagonal inertia tensors, level vehicles,
+/// horizontal normal), from the printed A, B, C, f1..f8 and a1..c3 with c3 corrected (audit A.c3).
 ///
 /// Args:
-///   m_prime: m' = m1 m2 / (m1 + m2)
-///   I1: principal moments (Ixx, Iyy, Izz) of vehicle 1, 3
-///   I2: principal moments of vehicle 2, 3
-///   r1: impulse centre of vehicle 1 relative to its CG, body axes, 3
-///   r2: impulse centre of vehicle 2, 3
-///   gamma1: heading of the normal relative to vehicle 1 (normal_yaw - yaw_1), radians
-///   gamma2: heading of the normal relative to vehicle 2, radians
-///   phi: roll of the t axis about n (tangent_roll), radians
-/// Returns: K, 3x3
+///   m_prime (scalar): m' = m1 m2 / (m1 + m2)
+///   I1 (3x1): principal moments (Ixx, Iyy, Izz) of vehicle 1
+///   I2 (3x1): principal moments of vehicle 2
+///   r1 (3x1): impulse centre of vehicle 1 relative to its CG, body axes
+///   r2 (3x1): impulse centre of vehicle 2
+///   gamma1 (scalar): heading of the normal relative to vehicle 1 (normal_yaw - yaw_1), radians
+///   gamma2 (scalar): heading of the normal relative to vehicle 2, radians
+///   phi (scalar): roll of the t axis about n (tangent_roll), radians
+/// Returns (3x3): K
 /// Operations: 175 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Eigen::Matrix<Scalar, 3, 3> coefficient_matrix_appendix_a(const Scalar& m_prime, const Eigen::Matrix<Scalar, 3, 1>& I1, const Eigen::Matrix<Scalar, 3, 1>& I2, const Eigen::Matrix<Scalar, 3, 1>& r1, const Eigen::Matrix<Scalar, 3, 1>& r2, const Scalar& gamma1, const Scalar& gamma2, const Scalar& phi) {
+Eigen::Matrix<Scalar, 3, 3> coefficient_matrix_appendix_a(const Scalar& m_prime,
+                                                          const Eigen::Matrix<Scalar, 3, 1>& I1,
+                                                          const Eigen::Matrix<Scalar, 3, 1>& I2,
+                                                          const Eigen::Matrix<Scalar, 3, 1>& r1,
+                                                          const Eigen::Matrix<Scalar, 3, 1>& r2,
+                                                          const Scalar& gamma1,
+                                                          const Scalar& gamma2,
+                                                          const Scalar& phi) {
   using std::cos;
   using std::sin;
+
+  // Intermediate terms (44)
   const Scalar cg1 = cos(gamma1);
   const Scalar sg1 = sin(gamma1);
   const Scalar cg2 = cos(gamma2);
@@ -64,7 +74,8 @@ Eigen::Matrix<Scalar, 3, 3> coefficient_matrix_appendix_a(const Scalar& m_prime,
   const Scalar t19 = r1(0) * r1(0);
   const Scalar t20 = r2(0) * r2(0);
   const Scalar f6 = t8 * t17 + t13 * t18 + t10 * t19 + t15 * t20;
-  const Scalar f7 = t1 * ((t11 - t9) * r1(0) * r1(1) - (t19 - t17) * cg1 * sg1) + t3 * ((t16 - t14) * r2(0) * r2(1) - (t20 - t18) * cg2 * sg2);
+  const Scalar f7 = t1 * ((t11 - t9) * r1(0) * r1(1) - (t19 - t17) * cg1 * sg1) +
+      t3 * ((t16 - t14) * r2(0) * r2(1) - (t20 - t18) * cg2 * sg2);
   const Scalar f8 = -t6;
   const Scalar t21 = (cp * f2 + f3 * sp) * m_prime - B * cp;
   const Scalar t22 = -((f2 - f7) * m_prime * sp - cp * f3 * m_prime);
@@ -72,6 +83,8 @@ Eigen::Matrix<Scalar, 3, 3> coefficient_matrix_appendix_a(const Scalar& m_prime,
   const Scalar t24 = sp * sp;
   const Scalar t25 = -f8;
   const Scalar t26 = ((t23 - t24) * f5 - (f4 - f6 + t25) * cp * sp) * m_prime;
+
+  // Output terms (9)
   Eigen::Matrix<Scalar, 3, 3> out;
   out(0, 0) = f1 * m_prime + A;
   out(0, 1) = t21;

@@ -9,19 +9,29 @@
 
 namespace impact3d::generated {
 
-/// Change of the pair's kinetic energy for any impulse P: -P . V + P^T K P / (2 m') (loss is its negative).
+/// Change of the pair's kinetic energy for any impulse P: -P . V + P^T K P / (2 m') (loss is its
+/// negative).
 ///
 /// Args:
-///   K: coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3
-///   m_prime: m' = m1 m2 / (m1 + m2)
-///   V: initial relative velocity at the impulse centre (n, t, z), 3
-///   P: impulse on vehicle 1, contact axes, 3
-/// Returns: T_after - T_before
+///   K (3x3): coefficient matrix of eq 9, rows (a_k, b_k, c_k)
+///   m_prime (scalar): m' = m1 m2 / (m1 + m2)
+///   V (3x1): initial relative velocity at the impulse centre (n, t, z)
+///   P (3x1): impulse on vehicle 1, contact axes
+/// Returns (scalar): T_after - T_before
 /// Operations: 28 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Scalar energy_change(const Eigen::Matrix<Scalar, 3, 3>& K, const Scalar& m_prime, const Eigen::Matrix<Scalar, 3, 1>& V, const Eigen::Matrix<Scalar, 3, 1>& P) {
+Scalar energy_change(const Eigen::Matrix<Scalar, 3, 3>& K,
+                     const Scalar& m_prime,
+                     const Eigen::Matrix<Scalar, 3, 1>& V,
+                     const Eigen::Matrix<Scalar, 3, 1>& P) {
+  // Intermediate terms (0)
+
+  // Output terms (1)
   Scalar out;
-  out = ((P(0) * K(0, 0) + P(1) * K(1, 0) + P(2) * K(2, 0)) * P(0) + (P(0) * K(0, 1) + P(1) * K(1, 1) + P(2) * K(2, 1)) * P(1) + (P(0) * K(0, 2) + P(1) * K(1, 2) + P(2) * K(2, 2)) * P(2)) / (Scalar(2) * m_prime) - P(0) * V(0) - P(1) * V(1) - P(2) * V(2);
+  out = ((P(0) * K(0, 0) + P(1) * K(1, 0) + P(2) * K(2, 0)) * P(0) +
+      (P(0) * K(0, 1) + P(1) * K(1, 1) + P(2) * K(2, 1)) * P(1) +
+      (P(0) * K(0, 2) + P(1) * K(1, 2) + P(2) * K(2, 2)) * P(2)) / (Scalar(2) * m_prime) - P(0) * V(0) - P(1) * V(1) -
+      P(2) * V(2);
   return out;
 }
 

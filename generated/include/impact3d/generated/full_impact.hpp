@@ -12,23 +12,34 @@ namespace impact3d::generated {
 /// Full Impact impulse, eqs 10-12: K P = m' (1 + e) V (at e = 0, the maximum-energy-loss impulse).
 ///
 /// Args:
-///   K: coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3
-///   m_prime: m' = m1 m2 / (m1 + m2)
-///   e: restitution eps
-///   V: initial relative velocity at the impulse centre (n, t, z), 3
-/// Returns: P = (P_n, P_t, P_z) on vehicle 1, contact axes, 3
+///   K (3x3): coefficient matrix of eq 9, rows (a_k, b_k, c_k)
+///   m_prime (scalar): m' = m1 m2 / (m1 + m2)
+///   e (scalar): restitution eps
+///   V (3x1): initial relative velocity at the impulse centre (n, t, z)
+/// Returns (3x1): P = (P_n, P_t, P_z) on vehicle 1, contact axes
 /// Operations: 70 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Eigen::Matrix<Scalar, 3, 1> full_impact(const Eigen::Matrix<Scalar, 3, 3>& K, const Scalar& m_prime, const Scalar& e, const Eigen::Matrix<Scalar, 3, 1>& V) {
+Eigen::Matrix<Scalar, 3, 1> full_impact(const Eigen::Matrix<Scalar, 3, 3>& K,
+                                        const Scalar& m_prime,
+                                        const Scalar& e,
+                                        const Eigen::Matrix<Scalar, 3, 1>& V) {
+  // Intermediate terms (5)
   const Scalar t0 = Scalar(1) + e;
   const Scalar Rn = t0 * V(0) * m_prime;
   const Scalar Rt = t0 * V(1) * m_prime;
   const Scalar Rz = t0 * V(2) * m_prime;
-  const Scalar t1 = Scalar(1) / (K(0, 0) * K(1, 1) * K(2, 2) - K(0, 0) * K(2, 1) * K(1, 2) - K(1, 0) * K(0, 1) * K(2, 2) + K(1, 0) * K(2, 1) * K(0, 2) + K(2, 0) * K(0, 1) * K(1, 2) - K(2, 0) * K(1, 1) * K(0, 2));
+  const Scalar t1 = Scalar(1) / (K(0, 0) * K(1, 1) * K(2, 2) - K(0, 0) * K(2, 1) * K(1, 2) -
+      K(1, 0) * K(0, 1) * K(2, 2) + K(1, 0) * K(2, 1) * K(0, 2) + K(2, 0) * K(0, 1) * K(1, 2) -
+      K(2, 0) * K(1, 1) * K(0, 2));
+
+  // Output terms (3)
   Eigen::Matrix<Scalar, 3, 1> out;
-  out(0) = t1 * ((K(0, 1) * K(1, 2) - K(1, 1) * K(0, 2)) * Rz - (K(0, 1) * K(2, 2) - K(2, 1) * K(0, 2)) * Rt + (K(1, 1) * K(2, 2) - K(2, 1) * K(1, 2)) * Rn);
-  out(1) = -t1 * ((K(0, 0) * K(1, 2) - K(1, 0) * K(0, 2)) * Rz - (K(0, 0) * K(2, 2) - K(2, 0) * K(0, 2)) * Rt + (K(1, 0) * K(2, 2) - K(2, 0) * K(1, 2)) * Rn);
-  out(2) = t1 * ((K(0, 0) * K(1, 1) - K(1, 0) * K(0, 1)) * Rz - (K(0, 0) * K(2, 1) - K(2, 0) * K(0, 1)) * Rt + (K(1, 0) * K(2, 1) - K(2, 0) * K(1, 1)) * Rn);
+  out(0) = t1 * ((K(0, 1) * K(1, 2) - K(1, 1) * K(0, 2)) * Rz - (K(0, 1) * K(2, 2) - K(2, 1) * K(0, 2)) * Rt +
+      (K(1, 1) * K(2, 2) - K(2, 1) * K(1, 2)) * Rn);
+  out(1) = -t1 * ((K(0, 0) * K(1, 2) - K(1, 0) * K(0, 2)) * Rz - (K(0, 0) * K(2, 2) - K(2, 0) * K(0, 2)) * Rt +
+      (K(1, 0) * K(2, 2) - K(2, 0) * K(1, 2)) * Rn);
+  out(2) = t1 * ((K(0, 0) * K(1, 1) - K(1, 0) * K(0, 1)) * Rz - (K(0, 0) * K(2, 1) - K(2, 0) * K(0, 1)) * Rt +
+      (K(1, 0) * K(2, 1) - K(2, 0) * K(1, 1)) * Rn);
   return out;
 }
 

@@ -9,23 +9,33 @@
 
 namespace impact3d::generated {
 
-/// Impulse on a solution plane through n at (c, s) with P_CP = mu P_n and none across it: eqs 17-18 (PC-Crash Sliding Impact at phi_FI, Wach's eq 22 at phi).
+/// Impulse on a solution plane through n at (c, s) with P_CP = mu P_n and none across it: eqs 17-18
+/// (PC-Crash Sliding Impact at phi_FI, Wach's eq 22 at phi).
 ///
 /// Args:
-///   K: coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3
-///   m_prime: m' = m1 m2 / (m1 + m2)
-///   e: restitution eps
-///   V: initial relative velocity at the impulse centre (n, t, z), 3
-///   c: cos phi of the solution plane (phi from t towards z)
-///   s: sin phi of the solution plane
-///   mu: impulse ratio P_CP / P_n
-/// Returns: P = (P_n, P_t, P_z) on vehicle 1, contact axes, 3
+///   K (3x3): coefficient matrix of eq 9, rows (a_k, b_k, c_k)
+///   m_prime (scalar): m' = m1 m2 / (m1 + m2)
+///   e (scalar): restitution eps
+///   V (3x1): initial relative velocity at the impulse centre (n, t, z)
+///   c (scalar): cos phi of the solution plane (phi from t towards z)
+///   s (scalar): sin phi of the solution plane
+///   mu (scalar): impulse ratio P_CP / P_n
+/// Returns (3x1): P = (P_n, P_t, P_z) on vehicle 1, contact axes
 /// Operations: 14 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Eigen::Matrix<Scalar, 3, 1> plane_impulse(const Eigen::Matrix<Scalar, 3, 3>& K, const Scalar& m_prime, const Scalar& e, const Eigen::Matrix<Scalar, 3, 1>& V, const Scalar& c, const Scalar& s, const Scalar& mu) {
+Eigen::Matrix<Scalar, 3, 1> plane_impulse(const Eigen::Matrix<Scalar, 3, 3>& K,
+                                          const Scalar& m_prime,
+                                          const Scalar& e,
+                                          const Eigen::Matrix<Scalar, 3, 1>& V,
+                                          const Scalar& c,
+                                          const Scalar& s,
+                                          const Scalar& mu) {
+  // Intermediate terms (3)
   const Scalar pa1 = K(0, 0);
   const Scalar pb1 = K(0, 1) * c + K(0, 2) * s;
   const Scalar pn = (V(0) * e * m_prime + V(0) * m_prime) / (mu * pb1 + pa1);
+
+  // Output terms (3)
   Eigen::Matrix<Scalar, 3, 1> out;
   out(0) = pn;
   out(1) = c * mu * pn;
@@ -36,20 +46,27 @@ Eigen::Matrix<Scalar, 3, 1> plane_impulse(const Eigen::Matrix<Scalar, 3, 3>& K, 
 /// Critical impulse ratio of a solution plane, eq 19: sliding along the plane stops at separation.
 ///
 /// Args:
-///   K: coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3
-///   e: restitution eps
-///   V: initial relative velocity at the impulse centre (n, t, z), 3
-///   c: cos phi of the solution plane (phi from t towards z)
-///   s: sin phi of the solution plane
-/// Returns: mu_CIR
+///   K (3x3): coefficient matrix of eq 9, rows (a_k, b_k, c_k)
+///   e (scalar): restitution eps
+///   V (3x1): initial relative velocity at the impulse centre (n, t, z)
+///   c (scalar): cos phi of the solution plane (phi from t towards z)
+///   s (scalar): sin phi of the solution plane
+/// Returns (scalar): mu_CIR
 /// Operations: 31 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Scalar plane_critical_ratio(const Eigen::Matrix<Scalar, 3, 3>& K, const Scalar& e, const Eigen::Matrix<Scalar, 3, 1>& V, const Scalar& c, const Scalar& s) {
+Scalar plane_critical_ratio(const Eigen::Matrix<Scalar, 3, 3>& K,
+                            const Scalar& e,
+                            const Eigen::Matrix<Scalar, 3, 1>& V,
+                            const Scalar& c,
+                            const Scalar& s) {
+  // Intermediate terms (5)
   const Scalar pa1 = K(0, 0);
   const Scalar pa2 = K(1, 0) * c + K(2, 0) * s;
   const Scalar pb1 = K(0, 1) * c + K(0, 2) * s;
   const Scalar pb2 = (K(1, 1) * c + K(2, 1) * s) * c + (K(1, 2) * c + K(2, 2) * s) * s;
   const Scalar Vcp = V(1) * c + V(2) * s;
+
+  // Output terms (1)
   Scalar out;
   out = -(Vcp * pa1 - V(0) * e * pa2 - V(0) * pa2) / (Vcp * pb1 - V(0) * e * pb2 - V(0) * pb2);
   return out;
@@ -58,19 +75,25 @@ Scalar plane_critical_ratio(const Eigen::Matrix<Scalar, 3, 3>& K, const Scalar& 
 /// Generalized impulse ratio of a solution plane, eq 20 (eq 19 at eps = 0).
 ///
 /// Args:
-///   K: coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3
-///   V: initial relative velocity at the impulse centre (n, t, z), 3
-///   c: cos phi of the solution plane (phi from t towards z)
-///   s: sin phi of the solution plane
-/// Returns: mu_GIR
+///   K (3x3): coefficient matrix of eq 9, rows (a_k, b_k, c_k)
+///   V (3x1): initial relative velocity at the impulse centre (n, t, z)
+///   c (scalar): cos phi of the solution plane (phi from t towards z)
+///   s (scalar): sin phi of the solution plane
+/// Returns (scalar): mu_GIR
 /// Operations: 25 (additions, multiplications, divisions and calls)
 template <typename Scalar>
-Scalar plane_generalized_ratio(const Eigen::Matrix<Scalar, 3, 3>& K, const Eigen::Matrix<Scalar, 3, 1>& V, const Scalar& c, const Scalar& s) {
+Scalar plane_generalized_ratio(const Eigen::Matrix<Scalar, 3, 3>& K,
+                               const Eigen::Matrix<Scalar, 3, 1>& V,
+                               const Scalar& c,
+                               const Scalar& s) {
+  // Intermediate terms (5)
   const Scalar pa1 = K(0, 0);
   const Scalar pa2 = K(1, 0) * c + K(2, 0) * s;
   const Scalar pb1 = K(0, 1) * c + K(0, 2) * s;
   const Scalar pb2 = (K(1, 1) * c + K(2, 1) * s) * c + (K(1, 2) * c + K(2, 2) * s) * s;
   const Scalar Vcp = V(1) * c + V(2) * s;
+
+  // Output terms (1)
   Scalar out;
   out = -(Vcp * pa1 - V(0) * pa2) / (Vcp * pb1 - V(0) * pb2);
   return out;
