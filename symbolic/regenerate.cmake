@@ -1,15 +1,7 @@
-# Runs impact3d-derive with the SHA-256 of symbolic/src (file names and contents, sorted by name).
-# Variables: DERIVE, SOURCES, GENERATED, PAPERS.
-file(GLOB files RELATIVE ${SOURCES} ${SOURCES}/*)
-list(SORT files)
-set(all "")
-foreach(f IN LISTS files)
-  file(SHA256 ${SOURCES}/${f} h)
-  string(APPEND all "${f} ${h}\n")
-endforeach()
-string(SHA256 inputs_hash "${all}")
-execute_process(COMMAND ${DERIVE} --generated ${GENERATED} --papers ${PAPERS} --inputs-hash ${inputs_hash}
-                RESULT_VARIABLE rc)
+# Runs impact3d-derive on the sources in SOURCES. The inputs hash (manifest.json) is computed by the
+# generator over the code of SOURCES, comments and blank space removed: `impact3d-derive --hash-sources`.
+# Variables: DERIVE, SOURCES, GENERATED (the generated/ folder), PAPERS.
+execute_process(COMMAND ${DERIVE} --generated ${GENERATED} --papers ${PAPERS} --sources ${SOURCES} RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "impact3d-derive failed")
 endif()

@@ -1,5 +1,6 @@
 #include "codegen.hpp"
 
+#include <algorithm>
 #include <functional>
 #include <set>
 #include <sstream>
@@ -193,7 +194,83 @@ std::set<int> choose_hoisted(const Dag& dag, const std::vector<int>& roots) {
 
 }  // namespace
 
-std::string print_kernel(const Kernel& k) {
+namespace {
+
+constexpr std::size_t kDocWidth = 100;   // docstrings and signatures
+constexpr std::size_t kCodeWidth = 120;  // statements, where a break exists
+
+// `text` filled into lines of at most kDocWidth columns, the first after `first`, the rest after `rest`.
+std::string wrap_words(const std::string& text, const std::string& first, const std::string& rest) {
+  std::istringstream words(text);
+  std::string out, line = first, word;
+  bool empty = true;
+  while (words >> word) {
+    if (!empty && line.size() + 1 + word.size() > kDocWidth) {
+      out += line + "\n";
+      line = rest;
+      empty = true;
+    }
+    line += (empty ? "" : " ") + word;
+    empty = false;
+  }
+  return out + line + "\n";
+}
+
+// One statement (without indentation) as lines of at most kCodeWidth columns where it can be broken:
+// after a binary operator, preferring in the second half of the line the shallowest parenthesis depth,
+// then + and - over * and /, then the last. Continuation lines are indented 4 more; only blanks change,
+// never a token or its order.
+std::string wrap_statement(const std::string& stmt, std::size_t indent) {
+  struct Break {
+    std::size_t pos;  // the blank after the operator
+    int rank;         // 2 * parenthesis depth, + 1 for * and /
+  };
+  std::vector<Break> breaks;
+  int depth = 0;
+  for (std::size_t i = 0; i + 2 < stmt.size(); ++i) {
+    const char c = stmt[i];
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+    if (c == ' ' && std::string("+-*/").find(stmt[i + 1]) != std::string::npos && stmt[i + 2] == ' ')
+      breaks.push_back({i + 2, 2 * depth + (stmt[i + 1] == '*' || stmt[i + 1] == '/' ? 1 : 0)});
+  }
+  std::string out;
+  std::size_t start = 0, pad = indent;
+  std::size_t b = 0;  // first break after start
+  while (pad + stmt.size() - start > kCodeWidth) {
+    while (b < breaks.size() && breaks[b].pos <= start) ++b;
+    if (b == breaks.size()) break;
+    std::size_t pick = b;
+    if (pad + breaks[b].pos - start <= kCodeWidth) {
+      // Fitting breaks; among those in the second half of the line, the lowest rank, then the last.
+      std::size_t last = b;
+      while (last + 1 < breaks.size() && pad + breaks[last + 1].pos - start <= kCodeWidth) ++last;
+      const std::size_t half = pad + (kCodeWidth - pad) / 2;
+      std::size_t from = b;
+      while (from < last && pad + breaks[from].pos - start < half) ++from;
+      pick = last;
+      for (std::size_t k = last + 1; k-- > from;)
+        if (breaks[k].rank < breaks[pick].rank) pick = k;
+    }
+    out += std::string(pad, ' ') + stmt.substr(start, breaks[pick].pos - start) + "\n";
+    start = breaks[pick].pos + 1;
+    pad = indent + 4;
+  }
+  return out + std::string(pad, ' ') + stmt.substr(start) + "\n";
+}
+
+}  // namespace
+
+std::string shape_of(const std::string& type) {
+  const std::string eigen = "Eigen::Matrix<Scalar, ";
+  const std::size_t at = type.find(eigen);
+  if (at == std::string::npos) return "scalar";
+  const std::size_t comma = type.find(", ", at + eigen.size());
+  const std::size_t close = type.find('>', comma);
+  return type.substr(at + eigen.size(), comma - at - eigen.size()) + "x" + type.substr(comma + 2, close - comma - 2);
+}
+
+PrintedKernel print_kernel(const Kernel& k) {
   Dag dag;
   std::vector<int> roots;
   for (const auto& [name, e] : k.locals) roots.push_back(dag.intern(e));
@@ -201,7 +278,8 @@ std::string print_kernel(const Kernel& k) {
   CodePrinter p(dag, k.symbol_code);
   p.to_hoist = choose_hoisted(dag, roots);
 
-  std::string body;
+  PrintedKernel r;
+  std::string intermediate;
   int next = 0;
   // Post-order: a temporary is defined after every temporary it uses.
   std::function<void(int)> emit = [&](int id) {
@@ -210,29 +288,51 @@ std::string print_kernel(const Kernel& k) {
     if (p.to_hoist.count(id)) {
       const std::string text = p.expression(id);
       const std::string name = "t" + std::to_string(next++);
-      body += "  const Scalar " + name + " = " + text + ";\n";
+      intermediate += wrap_statement("const Scalar " + name + " = " + text + ";", 2);
+      ++r.intermediate_terms;
       p.hoisted.emplace(id, name);
     }
   };
   std::string assigns;
   for (std::size_t i = 0; i < roots.size(); ++i) {
     emit(roots[i]);
-    if (i < k.locals.size())
-      body += "  const Scalar " + k.locals[i].first + " = " + p.expression(roots[i]) + ";\n";
-    else
-      assigns += "  " + k.outputs[i - k.locals.size()].first + " = " + p.expression(roots[i]) + ";\n";
+    if (i < k.locals.size()) {
+      intermediate += wrap_statement("const Scalar " + k.locals[i].first + " = " + p.expression(roots[i]) + ";", 2);
+      ++r.intermediate_terms;
+    } else {
+      assigns += wrap_statement(k.outputs[i - k.locals.size()].first + " = " + p.expression(roots[i]) + ";", 2);
+      ++r.output_terms;
+    }
   }
+  r.operations = p.ops;
+  r.calls = p.functions;
 
-  std::string s = "/// " + k.doc + "\n///\n/// Args:\n";
-  for (const auto& a : k.args) s += "///   " + a.decl.substr(a.decl.rfind(' ') + 1) + ": " + a.doc + "\n";
-  s += "/// Returns: " + k.returns_doc + "\n";
+  std::string s = wrap_words(k.doc, "/// ", "/// ") + "///\n/// Args:\n";
+  for (const auto& a : k.args) {
+    const std::string name = a.decl.substr(a.decl.rfind(' ') + 1);
+    s += wrap_words(name + " (" + shape_of(a.decl) + "): " + a.doc, "///   ", "///       ");
+  }
+  s += wrap_words("Returns (" + shape_of(k.returns) + "): " + k.returns_doc, "/// ", "///     ");
   s += "/// Operations: " + std::to_string(p.ops) + " (additions, multiplications, divisions and calls)\n";
-  s += "template <typename Scalar>\n" + k.returns + " " + k.name + "(";
-  for (std::size_t i = 0; i < k.args.size(); ++i) s += (i ? ", " : "") + k.args[i].decl;
-  s += ") {\n";
+
+  // One parameter a line, aligned after the parenthesis when the longest fits in kDocWidth.
+  s += "template <typename Scalar>\n";
+  const std::string head = k.returns + " " + k.name + "(";
+  std::size_t longest = 0;
+  for (const auto& a : k.args) longest = std::max(longest, a.decl.size());
+  const bool aligned = head.size() + longest + 2 <= kDocWidth;
+  s += aligned ? head : head + "\n";
+  for (std::size_t i = 0; i < k.args.size(); ++i) {
+    if (i > 0 || !aligned) s += std::string(aligned ? head.size() : 4, ' ');
+    s += k.args[i].decl + (i + 1 < k.args.size() ? ",\n" : ") {\n");
+  }
   for (const auto& f : p.functions) s += "  using std::" + f + ";\n";
-  s += body + "  " + k.returns + " out;\n" + assigns + "  return out;\n}\n";
-  return s;
+  if (!p.functions.empty()) s += "\n";
+  s += "  // Intermediate terms (" + std::to_string(r.intermediate_terms) + ")\n" + intermediate + "\n";
+  s += "  // Output terms (" + std::to_string(r.output_terms) + ")\n";
+  s += "  " + k.returns + " out;\n" + assigns + "  return out;\n}\n";
+  r.text = s;
+  return r;
 }
 
 namespace {

@@ -23,10 +23,10 @@ std::map<std::string, std::string> coefficient_symbols() {
   return m;
 }
 
-const KernelArg kK{"const Eigen::Matrix<Scalar, 3, 3>& K", "coefficient matrix of eq 9, rows (a_k, b_k, c_k), 3x3"};
+const KernelArg kK{"const Eigen::Matrix<Scalar, 3, 3>& K", "coefficient matrix of eq 9, rows (a_k, b_k, c_k)"};
 const KernelArg kMp{"const Scalar& m_prime", "m' = m1 m2 / (m1 + m2)"};
 const KernelArg kE{"const Scalar& e", "restitution eps"};
-const KernelArg kV{"const Eigen::Matrix<Scalar, 3, 1>& V", "initial relative velocity at the impulse centre (n, t, z), 3"};
+const KernelArg kV{"const Eigen::Matrix<Scalar, 3, 1>& V", "initial relative velocity at the impulse centre (n, t, z)"};
 const KernelArg kC{"const Scalar& c", "cos phi of the solution plane (phi from t towards z)"};
 const KernelArg kS{"const Scalar& s", "sin phi of the solution plane"};
 
@@ -37,17 +37,18 @@ ex plane_local(const ClosedForms& c, const char* name) {
 Kernel general_coefficient_matrix(const Derivation& d) {
   Kernel k;
   k.name = "coefficient_matrix";
+  k.equations = {"eq9"};
   k.doc = "K of eq 9 from full inertia tensors and general rotations: I + m' sum_i T_i [r_i]x^T J_i^-1 [r_i]x T_i^T "
           "(derived as -m' d(V_rf - V_ri)/dP from eqs 2, 4, 6, 7).";
   k.returns = "Eigen::Matrix<Scalar, 3, 3>";
-  k.returns_doc = "K (symmetric), 3x3";
+  k.returns_doc = "K (symmetric)";
   k.args = {kMp,
-            {"const Eigen::Matrix<Scalar, 3, 3>& J1", "inertia tensor of vehicle 1 about its CG, body axes (symmetric; upper triangle read), 3x3"},
-            {"const Eigen::Matrix<Scalar, 3, 3>& J2", "inertia tensor of vehicle 2, 3x3"},
-            {"const Eigen::Matrix<Scalar, 3, 1>& r1", "impulse centre of vehicle 1 relative to its CG, body axes, 3"},
-            {"const Eigen::Matrix<Scalar, 3, 1>& r2", "impulse centre of vehicle 2, 3"},
-            {"const Eigen::Matrix<Scalar, 3, 3>& T1", "vehicle 1 -> contact axes rotation (the paper's T_1), 3x3"},
-            {"const Eigen::Matrix<Scalar, 3, 3>& T2", "vehicle 2 -> contact axes rotation, 3x3"}};
+            {"const Eigen::Matrix<Scalar, 3, 3>& J1", "inertia tensor of vehicle 1 about its CG, body axes (symmetric; upper triangle read)"},
+            {"const Eigen::Matrix<Scalar, 3, 3>& J2", "inertia tensor of vehicle 2"},
+            {"const Eigen::Matrix<Scalar, 3, 1>& r1", "impulse centre of vehicle 1 relative to its CG, body axes"},
+            {"const Eigen::Matrix<Scalar, 3, 1>& r2", "impulse centre of vehicle 2"},
+            {"const Eigen::Matrix<Scalar, 3, 3>& T1", "vehicle 1 -> contact axes rotation (the paper's T_1)"},
+            {"const Eigen::Matrix<Scalar, 3, 3>& T2", "vehicle 2 -> contact axes rotation"}};
   k.symbol_code["mp"] = "m_prime";
   for (const Body& b : d.body) {
     const std::string n = std::to_string(b.index);
@@ -81,15 +82,19 @@ Kernel general_coefficient_matrix(const Derivation& d) {
 Kernel appendix_a_coefficient_matrix() {
   Kernel k;
   k.name = "coefficient_matrix_appendix_a";
+  k.equations = {"eq9", "A.A", "A.B", "A.C"};
+  for (int i = 1; i <= 8; ++i) k.equations.push_back("A.f" + std::to_string(i));
+  for (const char* c : {"a", "b", "c"})
+    for (int i = 1; i <= 3; ++i) k.equations.push_back("A." + std::string(c) + std::to_string(i));
   k.doc = "K of eq 9 under the paper's Appendix A assumptions (diagonal inertia tensors, level vehicles, horizontal "
           "normal), from the printed A, B, C, f1..f8 and a1..c3 with c3 corrected (audit A.c3).";
   k.returns = "Eigen::Matrix<Scalar, 3, 3>";
-  k.returns_doc = "K, 3x3";
+  k.returns_doc = "K";
   k.args = {kMp,
-            {"const Eigen::Matrix<Scalar, 3, 1>& I1", "principal moments (Ixx, Iyy, Izz) of vehicle 1, 3"},
-            {"const Eigen::Matrix<Scalar, 3, 1>& I2", "principal moments of vehicle 2, 3"},
-            {"const Eigen::Matrix<Scalar, 3, 1>& r1", "impulse centre of vehicle 1 relative to its CG, body axes, 3"},
-            {"const Eigen::Matrix<Scalar, 3, 1>& r2", "impulse centre of vehicle 2, 3"},
+            {"const Eigen::Matrix<Scalar, 3, 1>& I1", "principal moments (Ixx, Iyy, Izz) of vehicle 1"},
+            {"const Eigen::Matrix<Scalar, 3, 1>& I2", "principal moments of vehicle 2"},
+            {"const Eigen::Matrix<Scalar, 3, 1>& r1", "impulse centre of vehicle 1 relative to its CG, body axes"},
+            {"const Eigen::Matrix<Scalar, 3, 1>& r2", "impulse centre of vehicle 2"},
             {"const Scalar& gamma1", "heading of the normal relative to vehicle 1 (normal_yaw - yaw_1), radians"},
             {"const Scalar& gamma2", "heading of the normal relative to vehicle 2, radians"},
             {"const Scalar& phi", "roll of the t axis about n (tangent_roll), radians"}};
@@ -124,9 +129,10 @@ Kernel appendix_a_coefficient_matrix() {
 Kernel full_impact(const ClosedForms& c) {
   Kernel k;
   k.name = "full_impact";
+  k.equations = {"eq10", "eq11", "eq12"};
   k.doc = "Full Impact impulse, eqs 10-12: K P = m' (1 + e) V (at e = 0, the maximum-energy-loss impulse).";
   k.returns = "Eigen::Matrix<Scalar, 3, 1>";
-  k.returns_doc = "P = (P_n, P_t, P_z) on vehicle 1, contact axes, 3";
+  k.returns_doc = "P = (P_n, P_t, P_z) on vehicle 1, contact axes";
   k.args = {kK, kMp, kE, kV};
   k.symbol_code = coefficient_symbols();
   const char* R[3] = {"Rn", "Rt", "Rz"};
@@ -142,10 +148,11 @@ Kernel full_impact(const ClosedForms& c) {
 Kernel plane_impulse(const ClosedForms& c) {
   Kernel k;
   k.name = "plane_impulse";
+  k.equations = {"eq17", "eq18", "eq22"};
   k.doc = "Impulse on a solution plane through n at (c, s) with P_CP = mu P_n and none across it: eqs 17-18 "
           "(PC-Crash Sliding Impact at phi_FI, Wach's eq 22 at phi).";
   k.returns = "Eigen::Matrix<Scalar, 3, 1>";
-  k.returns_doc = "P = (P_n, P_t, P_z) on vehicle 1, contact axes, 3";
+  k.returns_doc = "P = (P_n, P_t, P_z) on vehicle 1, contact axes";
   k.args = {kK, kMp, kE, kV, kC, kS, {"const Scalar& mu", "impulse ratio P_CP / P_n"}};
   k.symbol_code = coefficient_symbols();
   for (const char* n : {"pa1", "pb1"}) {
@@ -163,6 +170,7 @@ Kernel plane_impulse(const ClosedForms& c) {
 Kernel plane_ratio(const ClosedForms& c, bool generalized) {
   Kernel k;
   k.name = generalized ? "plane_generalized_ratio" : "plane_critical_ratio";
+  k.equations = generalized ? std::vector<std::string>{"eq14", "eq17", "eq20"} : std::vector<std::string>{"eq17", "eq19"};
   k.doc = generalized ? "Generalized impulse ratio of a solution plane, eq 20 (eq 19 at eps = 0)."
                       : "Critical impulse ratio of a solution plane, eq 19: sliding along the plane stops at separation.";
   k.returns = "Scalar";
@@ -182,9 +190,10 @@ Kernel plane_ratio(const ClosedForms& c, bool generalized) {
 Kernel brach_impulse(const ClosedForms& c) {
   Kernel k;
   k.name = "brach_impulse";
+  k.equations = {"eq24"};
   k.doc = "Impulse with independent ratios P_t = mu_t P_n, P_z = mu_z P_n: eq 24.";
   k.returns = "Eigen::Matrix<Scalar, 3, 1>";
-  k.returns_doc = "P = (P_n, P_t, P_z) on vehicle 1, contact axes, 3";
+  k.returns_doc = "P = (P_n, P_t, P_z) on vehicle 1, contact axes";
   k.args = {kK, kMp, kE, kV, {"const Scalar& mu_t", "impulse ratio along t"}, {"const Scalar& mu_z", "impulse ratio along z"}};
   k.symbol_code = coefficient_symbols();
   for (int i = 0; i < 3; ++i) k.outputs.push_back({"out(" + std::to_string(i) + ")", c.brach_P(i, 0)});
@@ -196,6 +205,7 @@ Kernel brach_critical(const ClosedForms& c, char which) {
   k.symbol_code = coefficient_symbols();
   if (which == 't') {
     k.name = "brach_critical_t";
+    k.equations = {"eq25"};
     k.doc = "Critical mu_t given mu_z, eq 25: sliding along t stops at separation.";
     k.returns = "Scalar";
     k.returns_doc = "mu_tC";
@@ -203,6 +213,7 @@ Kernel brach_critical(const ClosedForms& c, char which) {
     k.outputs = {{"out", c.brach_mu_t_critical}};
   } else if (which == 'z') {
     k.name = "brach_critical_z";
+    k.equations = {"eq26"};
     k.doc = "Critical mu_z given mu_t, eq 26: sliding along z stops at separation.";
     k.returns = "Scalar";
     k.returns_doc = "mu_zC";
@@ -210,9 +221,10 @@ Kernel brach_critical(const ClosedForms& c, char which) {
     k.outputs = {{"out", c.brach_mu_z_critical}};
   } else {
     k.name = "brach_critical_both";
+    k.equations = {"eq27"};
     k.doc = "Both ratios critical, eq 27: no sliding at separation (on the Critical Impulse Line).";
     k.returns = "Eigen::Matrix<Scalar, 2, 1>";
-    k.returns_doc = "(mu_tC, mu_zC), 2";
+    k.returns_doc = "(mu_tC, mu_zC)";
     k.args = {kK, kE, kV};
     k.outputs = {{"out(0)", c.brach_both_t}, {"out(1)", c.brach_both_z}};
   }
@@ -225,7 +237,7 @@ Kernel energy_change(const ClosedForms& c) {
   k.doc = "Change of the pair's kinetic energy for any impulse P: -P . V + P^T K P / (2 m') (loss is its negative).";
   k.returns = "Scalar";
   k.returns_doc = "T_after - T_before";
-  k.args = {kK, kMp, kV, {"const Eigen::Matrix<Scalar, 3, 1>& P", "impulse on vehicle 1, contact axes, 3"}};
+  k.args = {kK, kMp, kV, {"const Eigen::Matrix<Scalar, 3, 1>& P", "impulse on vehicle 1, contact axes"}};
   k.symbol_code = coefficient_symbols();
   k.outputs = {{"out", c.energy_change}};
   return k;
