@@ -250,17 +250,12 @@ void impulse_space_view(Context& c) {
 void sweeps(Context& c, std::size_t k) {
   const io::StrategySpec& spec = c.spec.strategies[k];
   const double gir = c.fig.contact.gir;
+  // The strategy with its friction key (strategy_kinds.hpp) set to mu, written as a decimal.
+  const std::string sweep_key(io::strategy_kind(spec.kind).sweep_key);
   auto with_mu = [&](double mu) -> Strategy<double> {
-    switch (spec.kind) {
-      case io::StrategySpec::Kind::pc_crash: return PcCrash<double>{mu};
-      case io::StrategySpec::Kind::wach: return Wach<double>{mu, spec.limit};
-      default: {
-        Brach<double> b;
-        b.mu_t = mu;
-        if (spec.mu_z) b.mu_z = io::to_scalar<double>(*spec.mu_z);
-        return b;
-      }
-    }
+    io::StrategySpec swept = spec;
+    swept.numbers[sweep_key] = io::Number{fmt::format("{:.17g}", mu), mu, spec.path};
+    return io::to_strategy<double>(swept);
   };
   const Strategy<double> as_given = io::to_strategy<double>(spec);
   const double fv = c.f.velocity, fe = c.f.energy;
@@ -290,7 +285,7 @@ void sweeps(Context& c, std::size_t k) {
     }
     const std::string name = fmt::format("sweep_{}_{}", over_mu ? "mu" : "eps", k + 1);
     c.dir.write(name + ".csv", csv);
-    const std::string xl = over_mu ? (spec.kind == io::StrategySpec::Kind::brach ? "mu_t" : "mu") : "restitution eps";
+    const std::string xl = over_mu ? sweep_key : "restitution eps";
     const std::string span = over_mu ? (by_gir ? "0 to 1.5 GIR" : "0 to 1, GIR = 0") : "0 to 1";
     std::string gp = header_lines(c, fmt::format("{} against {} ({})", label(spec), xl, span), 1000, 800);
     gp += fmt::format("set key off\nunset title\nset multiplot layout 2,2 title {}.\"\\n\".{} noenhanced\n",

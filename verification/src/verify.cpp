@@ -60,12 +60,16 @@ io::CaseSpec random_case(std::mt19937_64& g) {
     c.contact.normal_pitch = num(in(-20, 20));
     c.contact.tangent_roll = num(in(-30, 30));
     c.restitution = num(in(0, 1));
-    using K = io::StrategySpec::Kind;
-    c.strategies = {{K::pc_crash, num(in(0, 1.2)), WachLimit::cir, {}, {}, ""},
-                    {K::wach, num(in(0, 1.2)), WachLimit::cir, {}, {}, ""},
-                    {K::wach, num(in(0, 1.2)), WachLimit::gir, {}, {}, ""},
-                    {K::brach, num(0), WachLimit::cir, num(in(-0.5, 0.5)), num(in(-0.3, 0.3)), ""},
-                    {K::brach, num(0), WachLimit::cir, std::nullopt, std::nullopt, ""}};
+    // Through the table's names, as a case file would give them.
+    auto spec = [&](std::string_view name, std::map<std::string, std::optional<io::Number>, std::less<>> numbers,
+                    std::map<std::string, std::string, std::less<>> choices = {}) {
+      return io::StrategySpec{*io::find_strategy_kind(name), std::move(numbers), std::move(choices), ""};
+    };
+    c.strategies = {spec("pc-crash", {{"mu", num(in(0, 1.2))}}),
+                    spec("wach", {{"mu", num(in(0, 1.2))}}, {{"limit", "cir"}}),
+                    spec("wach", {{"mu", num(in(0, 1.2))}}, {{"limit", "gir"}}),
+                    spec("brach", {{"mu_t", num(in(-0.5, 0.5))}, {"mu_z", num(in(-0.3, 0.3))}}),
+                    spec("brach", {{"mu_t", std::nullopt}, {"mu_z", std::nullopt}})};
     try {
       io::to_scene<double>(c);  // approaching?
       return c;

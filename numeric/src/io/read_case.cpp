@@ -18,6 +18,7 @@
 #include "impact3d/io/json_literals.hpp"
 #include "impact3d/io/limits.hpp"
 #include "impact3d/io/scalar_text.hpp"
+#include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/io/strategy_option.hpp"
 #include "impact3d/numeric/exact.hpp"
 
@@ -220,28 +221,29 @@ class Reader {
   StrategySpec strategy(const json& v, const std::string& ptr) const {
     if (!v.is_object()) fail(ptr, fmt::format("expected an object, got {}", type_name(v)));
     const std::string name = string(required(v, ptr, "name"), member_path(ptr, "name"));
+    const auto kind = find_strategy_kind(name);
+    if (!kind) fail(member_path(ptr, "name"), fmt::format("unknown strategy {} (expected {})", io::quoted(name), strategy_kind_names()));
+    const KindRow row = strategy_kind(*kind);
+    std::set<std::string> keys{"name"};
+    for (const auto& p : row.parameters) keys.emplace(p.key);
+    object(v, ptr, keys);
     StrategySpec s;
+    s.kind = *kind;
     s.path = ptr;
-    if (name == "pc-crash") {
-      object(v, ptr, {"name", "mu"});
-      s.kind = StrategySpec::Kind::pc_crash;
-      s.mu = non_negative(v, ptr, "mu");
-    } else if (name == "wach") {
-      object(v, ptr, {"name", "mu", "limit"});
-      s.kind = StrategySpec::Kind::wach;
-      s.mu = non_negative(v, ptr, "mu");
-      if (auto* l = optional(v, "limit")) {
-        const std::string limit = string(*l, member_path(ptr, "limit"));
-        if (limit == "gir") s.limit = WachLimit::gir;
-        else if (limit != "cir") fail(member_path(ptr, "limit"), fmt::format("expected \"cir\" or \"gir\", got {}", io::quoted(limit)));
+    for (const auto& p : row.parameters) {
+      const std::string key(p.key), path = member_path(ptr, key);
+      switch (p.type) {
+        case ParameterType::non_negative: s.numbers[key] = non_negative(v, ptr, key); break;
+        case ParameterType::ratio_or_critical: s.numbers[key] = ratio_or_critical(v, ptr, key); break;
+        case ParameterType::choice: {
+          std::string value(p.choices[0]);
+          if (auto* given = optional(v, key)) value = string(*given, path);
+          if (value != p.choices[0] && value != p.choices[1])
+            fail(path, fmt::format("expected \"{}\" or \"{}\", got {}", p.choices[0], p.choices[1], io::quoted(value)));
+          s.choices[key] = value;
+          break;
+        }
       }
-    } else if (name == "brach") {
-      object(v, ptr, {"name", "mu_t", "mu_z"});
-      s.kind = StrategySpec::Kind::brach;
-      s.mu_t = ratio_or_critical(v, ptr, "mu_t");
-      s.mu_z = ratio_or_critical(v, ptr, "mu_z");
-    } else {
-      fail(member_path(ptr, "name"), fmt::format("unknown strategy {} (expected pc-crash, wach or brach)", io::quoted(name)));
     }
     return s;
   }

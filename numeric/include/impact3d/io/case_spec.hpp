@@ -3,9 +3,12 @@
 #pragma once
 
 #include <array>
+#include <functional>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "impact3d/io/limits.hpp"
@@ -48,12 +51,22 @@ struct ContactSpec {
   std::string path;
 };
 
+// A strategy as written: its row of strategy_kinds.hpp and the values of that row's keys.
 struct StrategySpec {
-  enum class Kind { pc_crash, wach, brach } kind;
-  Number mu;
-  WachLimit limit = WachLimit::cir;
-  std::optional<Number> mu_t, mu_z;  // empty: "critical"
+  std::size_t kind = 0;
+  std::map<std::string, std::optional<Number>, std::less<>> numbers;  // empty: "critical"
+  std::map<std::string, std::string, std::less<>> choices;            // every choice, defaults filled in
   std::string path;
+
+  const std::optional<Number>& number(std::string_view key) const {
+    static const std::optional<Number> none;
+    const auto it = numbers.find(key);
+    return it == numbers.end() ? none : it->second;
+  }
+  std::string choice(std::string_view key) const {
+    const auto it = choices.find(key);
+    return it == choices.end() ? std::string() : it->second;
+  }
 };
 
 struct CaseSpec {

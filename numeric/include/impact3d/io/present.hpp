@@ -35,17 +35,4 @@ inline const char* unit_label(Units u, const std::string& quantity) {
   return "";
 }
 
-// The strategy as the user wrote it, e.g. "pc-crash mu=0.4" or "brach mu_t=critical mu_z=0".
-inline std::string strategy_label(const StrategySpec& s) {
-  switch (s.kind) {
-    case StrategySpec::Kind::pc_crash: return "pc-crash mu=" + s.mu.text;
-    case StrategySpec::Kind::wach:
-      return "wach mu=" + s.mu.text + (s.limit == WachLimit::cir ? " limit=cir" : " limit=gir");
-    case StrategySpec::Kind::brach:
-      return "brach mu_t=" + (s.mu_t ? s.mu_t->text : std::string("critical")) +
-             " mu_z=" + (s.mu_z ? s.mu_z->text : std::string("critical"));
-  }
-  return "?";
-}
-
 }  // namespace impact3d::io

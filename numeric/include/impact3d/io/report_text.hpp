@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "impact3d/io/present.hpp"
+#include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
 namespace impact3d::io {

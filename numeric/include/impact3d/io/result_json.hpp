@@ -6,27 +6,20 @@
 
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/present.hpp"
+#include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
 namespace impact3d::io {
 
 inline void write_strategy_echo(JsonWriter& w, const StrategySpec& s) {
+  const KindRow row = strategy_kind(s.kind);
   w.begin_object();
-  switch (s.kind) {
-    case StrategySpec::Kind::pc_crash:
-      w.key("name").string("pc-crash");
-      w.key("mu").raw(s.mu.text);
-      break;
-    case StrategySpec::Kind::wach:
-      w.key("name").string("wach");
-      w.key("mu").raw(s.mu.text);
-      w.key("limit").string(s.limit == WachLimit::cir ? "cir" : "gir");
-      break;
-    case StrategySpec::Kind::brach:
-      w.key("name").string("brach");
-      if (s.mu_t) w.key("mu_t").raw(s.mu_t->text); else w.key("mu_t").string("critical");
-      if (s.mu_z) w.key("mu_z").raw(s.mu_z->text); else w.key("mu_z").string("critical");
-      break;
+  w.key("name").string(std::string(row.name));
+  for (const auto& p : row.parameters) {
+    w.key(std::string(p.key));
+    if (p.type == ParameterType::choice) w.string(s.choice(p.key));
+    else if (const auto& n = s.number(p.key)) w.raw(n->text);
+    else w.string("critical");
   }
   w.end_object();
 }

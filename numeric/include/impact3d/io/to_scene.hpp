@@ -7,6 +7,7 @@
 #include "impact3d/io/case_spec.hpp"
 #include "impact3d/io/present.hpp"
 #include "impact3d/io/scalar_text.hpp"
+#include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/numeric/kinematics.hpp"
 #include "impact3d/numeric/rotation.hpp"
 #include "impact3d/numeric/strategy.hpp"
@@ -100,17 +101,6 @@ Scene<Scalar> to_scene(const CaseSpec& c) {
                                       unit_label(c.units, "velocity") +
                                       " (must be > 0; the normal points into vehicle 1)");
   return s;
-}
-
-template <typename Scalar>
-Strategy<Scalar> to_strategy(const StrategySpec& s) {
-  using Kind = StrategySpec::Kind;
-  if (s.kind == Kind::pc_crash) return PcCrash<Scalar>{to_scalar<Scalar>(s.mu)};
-  if (s.kind == Kind::wach) return Wach<Scalar>{to_scalar<Scalar>(s.mu), s.limit};
-  Brach<Scalar> b;
-  if (s.mu_t) b.mu_t = to_scalar<Scalar>(*s.mu_t);
-  if (s.mu_z) b.mu_z = to_scalar<Scalar>(*s.mu_z);
-  return b;
 }
 
 template <typename Scalar>
