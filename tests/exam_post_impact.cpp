@@ -58,25 +58,6 @@ TEST_CASE("sliding along an axis: none, started, continued, stopped, reversed", 
   CHECK(axis_change(0.0, 0.0, tol) == AxisChange::none);
 }
 
-TEST_CASE("swerve: the angle and the across-component of the final sliding", "[swerve]") {
-  std::mt19937_64 g(111);
-  for (int n = 0; n < 200; ++n) {
-    const Scene<double> s = random_scene(g);
-    const auto a = analyze(s, {PcCrash<double>{0.1}});
-    const auto& sol = a.solutions[0];
-    REQUIRE(sol.swerve_speed);
-    // Rotate the initial sliding onto +t: the final sliding's components are then (along, across).
-    const auto [along, across] = plane_components(std::atan2(sol.V_ri.z(), sol.V_ri.y()), sol.V_rf);
-    // Both sides rotate the same post-impact velocity, whose error is the solve's (eps kappa scale);
-    // an angle then errs by that over the final sliding speed (radians), twice for two evaluations.
-    const double vtol = 16 * eps * a.kappa * velocity_scale(s);
-    CHECK(*sol.swerve_speed == Approx(across).margin(vtol));
-    REQUIRE(sol.swerve_deg);
-    const double deg_tol = 2 * vtol / sol.sliding_after * 180 / M_PI;
-    CHECK(*sol.swerve_deg == Approx(std::atan2(across, along) * 180 / M_PI).margin(deg_tol));
-  }
-}
-
 TEST_CASE("a pulling contact and an energy gain are computed and flagged", "[warnings]") {
   const io::CaseSpec c = load_spec(example("fig8_side_impact.json"));
   const Scene<double> s = io::to_scene<double>(c);
