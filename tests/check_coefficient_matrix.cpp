@@ -10,6 +10,7 @@ using namespace impact3d::test;
 
 TEST_CASE("each column of K is the relative-velocity change of a unit impulse", "[K]") {
   std::mt19937_64 g(21);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const M3 K = direct::coefficient_matrix(s);
@@ -24,11 +25,14 @@ TEST_CASE("each column of K is the relative-velocity change of a unit impulse", 
       const double tol = 16 * eps * velocity_scale(s) * m_prime + 16 * eps * K.norm();
       CHECK((-m_prime * dV - K.col(k)).cwiseAbs().maxCoeff() <= tol);
     }
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
 TEST_CASE("K is symmetric positive definite", "[K]") {
   std::mt19937_64 g(22);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const M3 K = direct::coefficient_matrix(random_scene(g));
     // Symmetric in exact arithmetic (T S^T J^-1 S T^T is a congruence of the SPD J^-1); the Cholesky
@@ -36,13 +40,16 @@ TEST_CASE("K is symmetric positive definite", "[K]") {
     CHECK((K - K.transpose()).cwiseAbs().maxCoeff() <= 16 * eps * K.norm());
     Eigen::SelfAdjointEigenSolver<M3> eig(K);
     CHECK(eig.eigenvalues().minCoeff() >= 1.0 - 16 * eps * K.norm());  // K = I + positive semidefinite
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
 TEST_CASE("the Appendix A kernel (c3 corrected) equals K under its assumptions", "[K]") {
   // Level vehicles, diagonal tensors, horizontal normal with a rolled tangent: the paper's special case.
   std::mt19937_64 g(23);
   std::uniform_real_distribution<double> u(0, 1);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     Scene<double> s;
     for (auto& b : s.body) {
@@ -61,5 +68,7 @@ TEST_CASE("the Appendix A kernel (c3 corrected) equals K under its assumptions",
                                                            nyaw * M_PI / 180 - yaw(1), roll * M_PI / 180);
     // Both sum a few dozen O(|K|) products of sines and cosines accurate to a few eps.
     CHECK((K - KA).cwiseAbs().maxCoeff() <= 64 * eps * K.norm());
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }

@@ -37,6 +37,7 @@ void check_same_physics(const Solution<double>& a, const Solution<double>& b, bo
 TEST_CASE("turning the whole scene about world z changes no physical result", "[invariance]") {
   std::mt19937_64 g(101);
   std::uniform_real_distribution<double> u(-180, 180);
+  int checked = 0;
   for (int n = 0; n < 150; ++n) {
     const Scene<double> s = random_scene(g);
     const double turn = u(g);
@@ -56,11 +57,14 @@ TEST_CASE("turning the whole scene about world z changes no physical result", "[
       CHECK((Rz * a.solutions[k].P_W - b.solutions[k].P_W).norm() <= tol * a.solutions[k].P_W.norm());
       CHECK((Rz * a.solutions[k].after[0].v_W - b.solutions[k].after[0].v_W).norm() <= tol * velocity_scale(s));
     }
+    ++checked;
   }
+  CHECK(checked == 150);  // nothing in the loop skips a case
 }
 
 TEST_CASE("swapping which vehicle is called 1, with the normal reversed, changes no physical result", "[invariance]") {
   std::mt19937_64 g(102);
+  int checked = 0;
   for (int n = 0; n < 150; ++n) {
     const Scene<double> s = random_scene(g);
     Scene<double> w = s;
@@ -79,5 +83,7 @@ TEST_CASE("swapping which vehicle is called 1, with the normal reversed, changes
       check_same_physics(a.solutions[k], b.solutions[k], true, true, tol);
       CHECK((a.solutions[k].after[0].v_W - b.solutions[k].after[1].v_W).norm() <= tol * velocity_scale(s));
     }
+    ++checked;
   }
+  CHECK(checked == 150);  // nothing in the loop skips a case
 }

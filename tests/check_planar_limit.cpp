@@ -38,6 +38,7 @@ V2 rel_velocity(const Planar& b1, const Planar& b2) {
 TEST_CASE("planar limit: impulse ratio, critical ratio and full impact match a 2D calculation", "[planar]") {
   std::mt19937_64 g(91);
   std::uniform_real_distribution<double> u(0, 1);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     Scene<double> s;
     Planar p[2];
@@ -97,5 +98,9 @@ TEST_CASE("planar limit: impulse ratio, critical ratio and full impact match a 2
     CHECK(a.solutions[2].impulse.P_C.x() == Approx(Pfull.dot(nn)).epsilon(tol));
     CHECK(a.solutions[2].impulse.P_C.y() == Approx(Pfull.dot(tt)).epsilon(tol).margin(tol * Pfull.norm()));
     CHECK(std::abs(a.solutions[2].impulse.P_C.z()) <= tol * Pfull.norm());
+    ++checked;
   }
+  // Skipped: the random planar velocities do not approach along n by more than 1 m/s in about half the
+  // draws (140 of these 300): nothing to collide. At least 120 must be checked.
+  CHECK(checked >= 120);
 }

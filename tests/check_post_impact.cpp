@@ -9,6 +9,7 @@ using namespace impact3d::test;
 
 TEST_CASE("swerve: the angle and the across-component of the final sliding", "[swerve]") {
   std::mt19937_64 g(111);
+  int checked = 0;
   for (int n = 0; n < 200; ++n) {
     const Scene<double> s = random_scene(g);
     const auto a = analyze(s, {PcCrash<double>{0.1}});
@@ -23,5 +24,7 @@ TEST_CASE("swerve: the angle and the across-component of the final sliding", "[s
     REQUIRE(sol.swerve_deg);
     const double deg_tol = 2 * vtol / sol.sliding_after * 180 / M_PI;
     CHECK(*sol.swerve_deg == Approx(std::atan2(across, along) * 180 / M_PI).margin(deg_tol));
+    ++checked;
   }
+  CHECK(checked == 200);  // nothing in the loop skips a case
 }

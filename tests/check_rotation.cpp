@@ -10,6 +10,7 @@ using namespace impact3d::test;
 TEST_CASE("sin_cos_deg agrees with sin and cos of the angle in radians", "[rotation]") {
   std::mt19937_64 g(11);
   std::uniform_real_distribution<double> u(-720, 720);
+  int checked = 0;
   for (int k = 0; k < 2000; ++k) {
     const double deg = u(g);
     const auto sc = sin_cos_deg(deg);
@@ -18,7 +19,9 @@ TEST_CASE("sin_cos_deg agrees with sin and cos of the angle in radians", "[rotat
     const double rad = deg * M_PI / 180;
     CHECK(std::abs(sc.s - std::sin(rad)) <= 32 * eps);
     CHECK(std::abs(sc.c - std::cos(rad)) <= 32 * eps);
+    ++checked;
   }
+  CHECK(checked == 2000);  // nothing in the loop skips a case
 }
 
 // Appendix A: heading gamma, attitude theta, roll phi.
@@ -36,6 +39,7 @@ M3 paper_T(double gamma_deg, double theta_deg, double phi_deg) {
 TEST_CASE("T_i of a level vehicle is the paper's T with gamma = normal_yaw - yaw", "[rotation]") {
   std::mt19937_64 g(12);
   std::uniform_real_distribution<double> u(-180, 180), small(-40, 40);
+  int checked = 0;
   for (int k = 0; k < 500; ++k) {
     const double yaw = u(g), nyaw = u(g), npitch = small(g), roll = small(g);
     Scene<double> s;
@@ -44,6 +48,8 @@ TEST_CASE("T_i of a level vehicle is the paper's T with gamma = normal_yaw - yaw
     const M3 T = R_CB(s, 0), ref = paper_T(nyaw - yaw, npitch, roll);
     // Both are products of three rotations built from sines and cosines accurate to a few eps.
     CHECK((T - ref).cwiseAbs().maxCoeff() <= 32 * eps);
+    ++checked;
   }
+  CHECK(checked == 500);  // nothing in the loop skips a case
 }
 

@@ -20,6 +20,7 @@ Analysis<double> capped_wach(const Scene<double>& s, WachLimit limit) {
 
 TEST_CASE("Wach's plane is at phi = atan2(V_rzi, V_rti) with P_t' = mu P_n and P_z' = 0", "[wach]") {
   std::mt19937_64 g(71);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const auto a = analyze(s, {Wach<double>{0.05, WachLimit::cir}});
@@ -35,12 +36,15 @@ TEST_CASE("Wach's plane is at phi = atan2(V_rzi, V_rti) with P_t' = mu P_n and P
     CHECK(std::abs(*sol.impulse.cir - eq19_cir(k, s.restitution)) <= ratio_tolerance(k, a.K, s.restitution, *sol.impulse.cir));
     CHECK(std::abs(*sol.impulse.gir - eq20_gir(k)) <= ratio_tolerance(k, a.K, 0.0, *sol.impulse.gir));
     CHECK(P.x() == Approx(eq18_Pn(k, a.m_prime, s.restitution, a.V_ri.x(), mu)).epsilon(32 * eps * a.kappa));
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
 TEST_CASE("Wach capped at its CIR leaves only out-of-plane sliding (swerve)", "[wach]") {
   std::mt19937_64 g(72);
   int swerving = 0;
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const auto a = capped_wach(s, WachLimit::cir);
@@ -53,12 +57,15 @@ TEST_CASE("Wach capped at its CIR leaves only out-of-plane sliding (swerve)", "[
     CHECK(sol.sliding_after == Approx(std::abs(across)).margin(tol));
     CHECK(*sol.swerve_speed == Approx(across).margin(tol));
     if (std::abs(across) > 1e-3) ++swerving;
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
   CHECK(swerving > 250);  // off the Critical Impulse Line the swerve is generic, not an exception
 }
 
 TEST_CASE("Wach capped at its GIR reverses in-plane sliding by eps, like Full Impact", "[wach]") {
   std::mt19937_64 g(73);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const auto a = capped_wach(s, WachLimit::gir);
@@ -67,6 +74,8 @@ TEST_CASE("Wach capped at its GIR reverses in-plane sliding by eps, like Full Im
     const double phi = *sol.impulse.plane_angle_deg * M_PI / 180;
     const double along_i = plane_components(phi, sol.V_ri).along, along_f = plane_components(phi, sol.V_rf).along;
     CHECK(along_f == Approx(-s.restitution * along_i).margin(16 * eps * a.kappa * velocity_scale(s)));
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
