@@ -26,7 +26,7 @@ TEST_CASE("Wach's plane is at phi = atan2(V_rzi, V_rti) with P_t' = mu P_n and P
     const auto a = analyze(s, {Wach<double>{0.05, WachLimit::cir}});
     const auto& sol = a.solutions[0];
     const double phi = std::atan2(a.V_ri.z(), a.V_ri.y());
-    CHECK(*sol.impulse.plane_angle_deg * M_PI / 180 == Approx(phi).margin(8 * eps));
+    CHECK(std::abs(*sol.impulse.plane_angle_deg * M_PI / 180 - phi) <= 8 * eps);
     const double c = std::cos(phi), sn = std::sin(phi);
     const V3& P = sol.impulse.P_C;
     const double mu = *sol.impulse.mu;
@@ -54,9 +54,9 @@ TEST_CASE("Wach capped at its CIR leaves only out-of-plane sliding (swerve)", "[
     const double tol = 16 * eps * a.kappa * velocity_scale(s);
     CHECK(std::abs(along) <= tol);
     // What is left is the swerve: sliding across the initial direction, as the report computes it.
-    CHECK(sol.sliding_after == Approx(std::abs(across)).margin(tol));
-    CHECK(*sol.swerve_speed == Approx(across).margin(tol));
-    if (std::abs(across) > 1e-3) ++swerving;
+    CHECK(std::abs(sol.sliding_after - std::abs(across)) <= tol);
+    CHECK(std::abs(*sol.swerve_speed - across) <= tol);
+    if (std::abs(across) > 1e-3) ++swerving;  // 1 mm/s: a swerve, not rounding
     ++checked;
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
@@ -73,7 +73,7 @@ TEST_CASE("Wach capped at its GIR reverses in-plane sliding by eps, like Full Im
     REQUIRE(sol.impulse.regime == Regime::capped);
     const double phi = *sol.impulse.plane_angle_deg * M_PI / 180;
     const double along_i = plane_components(phi, sol.V_ri).along, along_f = plane_components(phi, sol.V_rf).along;
-    CHECK(along_f == Approx(-s.restitution * along_i).margin(16 * eps * a.kappa * velocity_scale(s)));
+    CHECK(std::abs(along_f + s.restitution * along_i) <= 16 * eps * a.kappa * velocity_scale(s));
     ++checked;
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
