@@ -1,5 +1,5 @@
-// Brach's independent impulse ratios (eqs 23-27) against the printed closed forms and the Critical
-// Impulse Line.
+// Brach's independent impulse ratios (eqs 23-27) on seeded random collisions, against the printed closed
+// forms and the Critical Impulse Line.
 #include <catch2/catch.hpp>
 
 #include "plane_closed_forms.hpp"

@@ -1,5 +1,7 @@
-// K (eq 9) against values obtained without it: a hand derivation, and the relative-velocity change
-// that unit impulses produce when applied to the bodies by the Newton-Euler impulse equations.
+// K (eq 9) on seeded random collisions against values obtained without it: the relative-velocity change
+// that unit impulses produce when applied to the bodies by the Newton-Euler impulse equations, its
+// symmetry and definiteness, and the paper's Appendix A kernel under its assumptions. The hand-derived
+// K is in exam_coefficient_matrix.cpp.
 #include <catch2/catch.hpp>
 
 #include "impact3d/generated/coefficient_matrix_appendix_a.hpp"

@@ -1,4 +1,5 @@
-// Conservation laws every impulse law must obey, checked from the post-impact states.
+// Conservation laws every impulse law must obey, checked from the post-impact states of seeded random
+// collisions under every strategy.
 #include <catch2/catch.hpp>
 
 #include "support.hpp"

@@ -1,4 +1,5 @@
-// Full Impact (eqs 10-12) against its defining properties and against Cramer's rule written out here.
+// Full Impact (eqs 10-12) on seeded random collisions, against its defining properties and against
+// Cramer's rule written out here.
 #include <catch2/catch.hpp>
 
 #include "support.hpp"

@@ -1,8 +1,8 @@
 // Never silently wrong: on ill-conditioned random collisions (a first vehicle with a tiny yaw inertia
 // or a near-singular tensor, kappa(K) up to 1e12 and beyond), every result that double or long double
 // does not flag agrees with the 50-digit solve of the same decimal text within its own rounding bound,
-// and takes the same regime unless it says the regime is undecided. Text and JSON print no NaN or
-// infinity without a warning.
+// and takes the same regime unless it says the regime is undecided. (That text and JSON print no NaN or
+// infinity without a warning is check_extreme_input.cpp; the named tensor is exam_precision_flags.cpp.)
 #include <catch2/catch.hpp>
 
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-// The normal constraint shared by every strategy: V_rnf = -eps V_rni.
+// The normal constraint shared by every strategy, on seeded random collisions: V_rnf = -e V_rni.
 #include <catch2/catch.hpp>
 
 #include "support.hpp"

@@ -1,4 +1,6 @@
-// Rotations against the contract's definitions and the paper's Appendix A transformation, typed in here.
+// Rotations at seeded random angles against the library's sin and cos and the paper's Appendix A
+// transformation, typed in here. The exact quarter turns and the frame from vectors are in
+// exam_rotation.cpp.
 #include <catch2/catch.hpp>
 #include <cmath>
 

@@ -1,4 +1,5 @@
-// Wach's strategy (eqs 21-22): plane along the initial sliding, P_z' = 0, ratio capped at CIR or GIR.
+// Wach's strategy (eqs 21-22) on seeded random collisions: plane along the initial sliding, P_z' = 0,
+// ratio capped at CIR or GIR.
 #include <catch2/catch.hpp>
 #include <cmath>
 
