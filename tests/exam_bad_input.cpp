@@ -1,6 +1,6 @@
 // The CLI on named malformed and hostile inputs: exactly one line on stderr naming the JSON path and the
 // problem, exit status 1, nothing on stdout, within bounded time and memory, at every precision (each
-// converts the text itself).
+// converts the text itself). And the error policy of every subcommand (solve, plot, verify, compare).
 //
 // Where the expected answers come from:
 //  - the exit statuses and line shapes are the README's policy ("Exit status"): 1 and one line
@@ -87,22 +87,82 @@ TEST_CASE("an endless or oversized file is refused after the size limit", "[bad-
 
 TEST_CASE("command-line usage errors: exit 2 and one line", "[bad-input]") {
   const std::string fig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
+  // Run in a scratch directory, so that a plot that wrongly ran would leave its figures where we look.
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-usage-{}", ::getpid());
+  fs::create_directories(dir);
+  // For each subcommand: an unknown option, a missing argument (positional or an option's value), and an
+  // invalid value where the subcommand has options that take one.
   for (const auto& args : std::vector<std::vector<std::string>>{{"solve", fig8, "--digits", "0"},
                                                                 {"solve", fig8, "--format", "xml\n\x1b[2J"},
                                                                 {"solve"},
+                                                                {"solve", fig8, "--bogus"},
+                                                                {"solve", fig8, "--format"},
                                                                 {"frobnicate"},
+                                                                {},
+                                                                {"plot"},
+                                                                {"plot", fig8},
+                                                                {"plot", fig8, "-o"},
+                                                                {"plot", fig8, "-o", "figs", "--bogus"},
                                                                 {"compare", fig8},
+                                                                {"compare"},
+                                                                {"compare", fig8, fig8, "--bogus"},
+                                                                {"compare", fig8, fig8, "--rtol"},
                                                                 {"compare", fig8, fig8, "--atol", "inf"},
                                                                 {"compare", fig8, fig8, "--rtol", "-1"},
+                                                                {"verify", "--bogus"},
+                                                                {"verify", "--random"},
                                                                 {"verify", "--random", "1000000000"}}) {
-    const Run r = run_argv(args);
-    INFO(args.back());
+    std::string line;
+    for (const auto& a : args) line += a + " ";
+    INFO(line);
+    const Run r = run_argv(args, dir.string());
     CHECK(r.status == 2);
     CHECK(r.out.empty());
     CHECK(r.err.rfind("impact3d: usage: ", 0) == 0);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK((!r.err.empty() && r.err.back() == '\n'));
     CHECK(r.err.find('\x1b') == std::string::npos);
   }
+  CHECK(!fs::exists(dir / "figs"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("bad input to every subcommand: exit 1, one error line, nothing on stdout", "[bad-input]") {
+  // A malformed case (its line from bad_input/expected.tsv) and a file that does not exist, given to each
+  // subcommand that reads it; compare reads result files, so it gets a case file where a result belongs.
+  const std::string bad = std::string(BAD_INPUT_DIR) + "/mass_negative.json";
+  const std::string fig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
+  const std::string missing = "/nonexistent/case.json";
+  const std::string bad_line = "impact3d: error: " + bad + ": $.vehicles[1].mass: must be > 0 (got -2200)\n";
+  const std::string missing_line = "impact3d: error: " + missing + ": cannot read the file (No such file or directory)\n";
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-bad-{}", ::getpid());
+  fs::create_directories(dir);
+  struct Expect {
+    std::vector<std::string> args;
+    std::string err;  // the exact line, or empty when only its shape is pinned
+  };
+  const std::vector<Expect> runs = {{{"solve", bad}, bad_line},
+                                    {{"solve", missing}, missing_line},
+                                    {{"plot", bad, "-o", "figs"}, bad_line},
+                                    {{"plot", missing, "-o", "figs"}, missing_line},
+                                    {{"verify", bad}, bad_line},
+                                    {{"verify", missing}, missing_line},
+                                    {{"compare", fig8, fig8}, ""},
+                                    {{"compare", missing, fig8}, ""}};
+  for (const auto& [args, err] : runs) {
+    std::string line;
+    for (const auto& a : args) line += a + " ";
+    const Run r = run_argv(args, dir.string());
+    INFO(line << "\n" << r.err);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err.rfind("impact3d: error: ", 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK((!r.err.empty() && r.err.back() == '\n'));
+    if (!err.empty()) CHECK(r.err == err);
+  }
+  CHECK(!fs::exists(dir / "figs"));  // plot wrote nothing for a case it rejected
+  fs::remove_all(dir);
 }
 
 TEST_CASE("a command-line strategy that is not UTF-8 or holds control characters: one escaped line", "[bad-input]") {
