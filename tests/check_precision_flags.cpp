@@ -1,8 +1,8 @@
 // Never silently wrong: on ill-conditioned random collisions (a first vehicle with a tiny yaw inertia
 // or a near-singular tensor, kappa(K) up to 1e12 and beyond), every result that double or long double
 // does not flag agrees with the 50-digit solve of the same decimal text within its own rounding bound,
-// and takes the same regime unless it says the regime is undecided. Text and JSON print no NaN or
-// infinity without a warning.
+// and takes the same regime unless it says the regime is undecided. (That text and JSON print no NaN or
+// infinity without a warning is check_extreme_input.cpp; the named tensor is exam_precision_flags.cpp.)
 #include <catch2/catch.hpp>
 
 #include <fmt/format.h>
@@ -43,6 +43,7 @@ bool has(const std::vector<Warning>& ws, WarningCode c) {
 }
 
 struct Tally {
+  int cases = 0;  // collisions the 50-digit reference solves: the ones held to it
   int results = 0, flagged = 0, unflagged = 0, solve_errors = 0;
 };
 
@@ -84,6 +85,7 @@ void sweep(Engine engine, Tally& t, int cases) {
     } catch (const std::exception&) {
       continue;  // not approaching, or no impulse even at 50 digits: nothing to hold the precision to
     }
+    ++t.cases;
     try {
       check(analyze(io::to_scene<T>(spec), io::to_strategies<T>(spec), engine), ref, t);
     } catch (const SolveError&) {
@@ -101,7 +103,12 @@ TEST_CASE("unflagged results hold their rounding bound on ill-conditioned collis
     sweep<long double>(engine, ld, 300);
     INFO(engine_name(engine));
     // The sweep must exercise both sides of the flag, or it shows nothing.
+    // Skipped: collisions the 50-digit solve refuses (not approaching, or no impulse), 10 of these 300.
+    // At least 90% must be held to the reference.
+    CHECK(d.cases >= 270);
+    CHECK(ld.cases == d.cases);  // the same seeded collisions at both precisions
     CHECK(d.results >= 600);
+    CHECK(ld.results >= 600);
     CHECK(d.flagged >= 100);
     CHECK(d.unflagged >= 100);
     CHECK(ld.unflagged > d.unflagged);
@@ -110,23 +117,3 @@ TEST_CASE("unflagged results hold their rounding bound on ill-conditioned collis
   }
 }
 
-TEST_CASE("the issue's tensor: every precision short of 50 digits flags it or refuses it", "[precision]") {
-  const std::string text = R"({"vehicles": [
-      {"mass": 1560, "inertia": [[1, 0, 0.9999999999], [0, 2500, 0], [0.9999999999, 0, 1]], "velocity": [0, 11.176, 0],
-       "impulse_center": [0.35, -0.90, 0.05]},
-      {"mass": 2600, "inertia": {"Ixx": 1100, "Iyy": 5600, "Izz": 5900}, "orientation_deg": {"yaw": 90},
-       "velocity": [11.176, 0, 0], "impulse_center": [2.60, 0.20, -0.15]}],
-    "contact": {"normal_yaw_deg": 0}, "restitution": 0.1, "strategy": {"name": "pc-crash", "mu": 0.4}})";
-  const io::CaseSpec spec = io::read_case(text);
-  for (Engine engine : {Engine::generated, Engine::direct}) {
-    try {
-      const auto a = analyze(io::to_scene<double>(spec), io::to_strategies<double>(spec), engine);
-      CHECK(has(a.solutions[0].warnings, WarningCode::rounding));
-    } catch (const SolveError&) {
-    }
-    const auto ld = analyze(io::to_scene<long double>(spec), io::to_strategies<long double>(spec), engine);
-    CHECK(has(ld.solutions[0].warnings, WarningCode::rounding));
-    const auto wide = analyze(io::to_scene<mp::float100>(spec), io::to_strategies<mp::float100>(spec), engine);
-    CHECK(wide.solutions[0].warnings.empty());
-  }
-}

@@ -58,9 +58,12 @@ inline Scene<double> random_scene(std::mt19937_64& g) {
   }
 }
 
+// Both engines: the closed forms derived by symbolic/ and the direct 3x3 solves of the constraints.
+constexpr Engine kEngines[] = {Engine::direct, Engine::generated};
+
 template <typename S>
-Solution<double> solve_one(const Scene<double>& s, const S& strategy) {
-  return analyze(s, std::vector<Strategy<double>>{Strategy<double>(strategy)}).solutions.at(0);
+Solution<double> solve_one(const Scene<double>& s, const S& strategy, Engine engine = Engine::generated) {
+  return analyze(s, std::vector<Strategy<double>>{Strategy<double>(strategy)}, engine).solutions.at(0);
 }
 
 inline std::vector<Strategy<double>> every_strategy(double mu) {

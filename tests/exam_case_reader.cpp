@@ -1,4 +1,8 @@
-// The case-file reader: literals kept exactly, defaults, shorthands and command-line strategies.
+// The case-file reader on inputs written here: literals kept exactly, defaults, shorthands and
+// command-line strategies. Each known value is either the literal text of the input (which the reader
+// keeps as written, for every precision to convert itself), a default or a shorthand of the case-format
+// contract (SI units, zero orientation and angular velocity, contact pitch and roll zero, the diagonal
+// inertia shorthand with zero products), or the JSON-path syntax the README documents for error lines.
 #include <catch2/catch.hpp>
 
 #include "impact3d/io/json_literals.hpp"
@@ -40,7 +44,10 @@ TEST_CASE("defaults: SI, zero orientation and angular velocity, contact pitch an
 }
 
 TEST_CASE("a contact frame given by vectors equals the one given by angles", "[reader]") {
-  // normal_yaw 90, pitch 0, roll 0: n = +y, t = -x.
+  // By hand from the contract's definitions: normal_yaw 90, pitch 0, roll 0 gives n = Rz(90) e_x = +y and
+  // t = Rz(90) e_y = -x, with no rounding (sin_cos_deg is exact at quarter turns); the vectors give
+  // n = (0, 2, 0) / 2 = +y and t = (-1, 0.3, 0) with its n part removed, normalised: -x. The vector path
+  // rounds in a normalisation and a Gram-Schmidt step: a few eps.
   const auto by_angles = io::to_scene<double>(io::read_case(minimal()));
   const auto by_vectors =
       io::to_scene<double>(io::read_case(minimal(R"("contact": {"normal": [0, 2, 0], "tangent": [-1, 0.3, 0]})")));
@@ -72,11 +79,14 @@ TEST_CASE("command-line strategies use the same rules", "[reader]") {
     io::read_strategy_option("pc-crash:mu=-1", 3);
     FAIL("accepted a negative mu");
   } catch (const io::CaseError& e) {
+    // The contract: mu >= 0 for pc-crash; the path names the fourth --strategy option (index 3).
     CHECK(e.line() == "--strategy[3].mu: must be >= 0 (got -1)");
   }
 }
 
 TEST_CASE("paths print keys that are not identifiers quoted and escaped", "[reader]") {
+  // The README's rule for error lines: keys that are not identifiers are quoted as in $["a/b"] (JSONPath's
+  // bracket notation), control characters printed as \n or \xNN (ESC = 0x1B), so every error stays one line.
   CHECK(io::member_path(io::element_path("$.vehicles", 0), "mass") == "$.vehicles[0].mass");
   CHECK(io::member_path("$", "vehicles/0/mass") == "$[\"vehicles/0/mass\"]");
   CHECK(io::member_path("$", "0") == "$[\"0\"]");

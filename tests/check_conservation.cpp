@@ -1,4 +1,5 @@
-// Conservation laws every impulse law must obey, checked from the post-impact states.
+// Conservation laws every impulse law must obey, checked from the post-impact states of seeded random
+// collisions under every strategy.
 #include <catch2/catch.hpp>
 
 #include "support.hpp"
@@ -8,6 +9,7 @@ using namespace impact3d::test;
 
 TEST_CASE("linear momentum of the pair is conserved by every strategy", "[conservation]") {
   std::mt19937_64 g(31);
+  int checked = 0;
   for (int n = 0; n < 200; ++n) {
     const Scene<double> s = random_scene(g);
     const Analysis<double> a = analyze(s, every_strategy(0.4));
@@ -18,11 +20,14 @@ TEST_CASE("linear momentum of the pair is conserved by every strategy", "[conser
       // m (v + P/m) rounds once in the division and once in the sum: a few eps of the momenta and |P|.
       CHECK((after - before).cwiseAbs().maxCoeff() <= 8 * eps * (scale + 2 * sol.P_W.norm()));
     }
+    ++checked;
   }
+  CHECK(checked == 200);  // nothing in the loop skips a case
 }
 
 TEST_CASE("each vehicle's angular momentum about its impulse centre is conserved", "[conservation]") {
   std::mt19937_64 g(32);
+  int checked = 0;
   for (int n = 0; n < 200; ++n) {
     const Scene<double> s = random_scene(g);
     const Analysis<double> a = analyze(s, every_strategy(0.7));
@@ -35,13 +40,16 @@ TEST_CASE("each vehicle's angular momentum about its impulse centre is conserved
                              b.p_CgIc_B.norm() * (b.mass * (b.v_W.norm() + sol.after[i].v_W.norm()) + sol.P_W.norm());
         CHECK((H1 - H0).cwiseAbs().maxCoeff() <= 32 * eps * scale);
       }
+    ++checked;
   }
+  CHECK(checked == 200);  // nothing in the loop skips a case
 }
 
 TEST_CASE("the energy change equals -P . (V_ri + V_rf) / 2", "[conservation]") {
   // Work of an impulse on two rigid bodies at the impulse centre: dT = -P . (V_ri + V_rf) / 2, computed
   // here from the relative velocities, against the difference of kinetic energies of the states.
   std::mt19937_64 g(33);
+  int checked = 0;
   for (int n = 0; n < 200; ++n) {
     const Scene<double> s = random_scene(g);
     const Analysis<double> a = analyze(s, every_strategy(0.3));
@@ -52,5 +60,7 @@ TEST_CASE("the energy change equals -P . (V_ri + V_rf) / 2", "[conservation]") {
       const double tol = 32 * eps * a.kappa * (sol.energy_before + sol.impulse.P_C.norm() * velocity_scale(s));
       CHECK(std::abs(-sol.energy_loss - work) <= tol);
     }
+    ++checked;
   }
+  CHECK(checked == 200);  // nothing in the loop skips a case
 }

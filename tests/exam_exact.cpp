@@ -1,5 +1,18 @@
-// Exact rational arithmetic: the constraints hold with no rounding at all, the 100-digit solve agrees,
-// and quantities that need a square root are named instead of approximated.
+// Exact rational arithmetic on named cases (verification/cases and the bundled examples): the
+// constraints hold with no rounding at all, the 100-digit solve agrees, and quantities that need a
+// square root are named instead of approximated.
+//
+// Where the known answers come from:
+//  - decimal text denotes a fraction exactly (0.1 = 1/10, 1.5e-3 = 3/2000, ...), by the definition of
+//    decimal notation;
+//  - in exact arithmetic the paper's equations hold with equality: restitution on the normal
+//    (V_rnf = -e V_rni), momentum of the pair, eq 9 (m' (V_rf - V_ri) = -K P), the critical ratios of
+//    eqs 25-27 stopping their sliding, and the Full Impact's V_rf = -e V_ri (eqs 10-12), so both engines
+//    must give the same fraction;
+//  - pc-crash's phi_FI plane (eqs 13, 15) needs sqrt(P_t^2 + P_z^2) and a yaw of 183 degrees needs
+//    sin 183, neither rational; brach with both ratios critical (eq 27) is rational;
+//  - [[0.8, -0.6, 0], [0.6, 0.8, 0], [0, 0, 1]] is the yaw atan2(0.6, 0.8) = 36.87 degrees (a 3-4-5
+//    triangle).
 #include <catch2/catch.hpp>
 
 #include "impact3d/numeric/exact_analysis.hpp"
@@ -14,7 +27,6 @@ namespace {
 // Cases whose rotations are rational: angles at multiples of 90 degrees, or the rational matrix case.
 const char* kRational[] = {"planar_right_angle.json", "restitution_zero.json", "restitution_one.json",
                            "hard_lever_arms_near_zero.json", "exact_rational_rotations.json"};
-
 
 io::CaseSpec case_spec(const std::string& name) {
   return load_spec(std::string(IMPACT3D_CASES_DIR) + "/" + name);
@@ -59,8 +71,10 @@ TEST_CASE("exact solutions satisfy their constraints with no rounding", "[exact]
       CHECK(rational_results > 0);
       // Both engines give the same fractions.
       const ExactAnalysis other = exact_analyze(s, io::to_strategies<rational>(c), engine == Engine::generated ? Engine::direct : Engine::generated);
-      for (std::size_t k = 0; k < x.results.size(); ++k)
+      for (std::size_t k = 0; k < x.results.size(); ++k) {
+        REQUIRE(x.results[k].solution.has_value() == other.results[k].solution.has_value());
         if (x.results[k].solution) CHECK(x.results[k].solution->impulse.P_C == other.results[k].solution->impulse.P_C);
+      }
     }
   }
 }
@@ -72,17 +86,22 @@ TEST_CASE("the 100-digit solve agrees with the exact one to 95 digits", "[exact]
     const io::CaseSpec c = case_spec(name);
     const ExactAnalysis x = exact_analyze(io::to_scene<rational>(c), io::to_strategies<rational>(c));
     const Analysis<F> a = analyze(io::to_scene<F>(c), io::to_strategies<F>(c));
+    int compared = 0;
     for (std::size_t k = 0; k < x.results.size(); ++k) {
-      if (!x.results[k].solution) continue;
+      if (!x.results[k].solution) continue;  // not rational (a square root): nothing exact to hold it to
+      ++compared;
       const Vec3<rational>& P = x.results[k].solution->impulse.P_C;
       for (int i = 0; i < 3; ++i) {
         const F exact = to_floating<F>(P(i));
         const F scale = a.solutions[k].impulse.P_C.norm();
         using std::abs;
-        // 100 digits, through a solve of condition kappa <= 10 here and inputs rounded once each.
-        CHECK(abs(a.solutions[k].impulse.P_C(i) - exact) <= F("1e-95") * scale);
+        // 100 digits (eps = 2^-333, 5.7e-101): inputs rounded once each from their decimal text and a solve
+        // of condition kappa (at most 3.5 here) leave a few dozen eps kappa; 64 eps kappa is below the
+        // README's "agree to 95 digits" (1e-95) by three orders. Measured: at most 2 eps.
+        CHECK(abs(a.solutions[k].impulse.P_C(i) - exact) <= 64 * a.kappa * std::numeric_limits<F>::epsilon() * scale);
       }
     }
+    CHECK(compared > 0);  // each of these cases has rational results (the test above counts them too)
   }
 }
 

@@ -38,6 +38,7 @@ V2 rel_velocity(const Planar& b1, const Planar& b2) {
 TEST_CASE("planar limit: impulse ratio, critical ratio and full impact match a 2D calculation", "[planar]") {
   std::mt19937_64 g(91);
   std::uniform_real_distribution<double> u(0, 1);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     Scene<double> s;
     Planar p[2];
@@ -72,6 +73,7 @@ TEST_CASE("planar limit: impulse ratio, critical ratio and full impact match a 2
     // Impulse ratio mu: P = P_n (n + mu t), restitution on the normal.
     const V2 dir = nn + mu * tt;
     const double Pn = (1 + e) * V.dot(nn) / nn.dot(W * dir);
+    // The 2D and the 3D calculations are each a solve of condition kappa(K) and a few dozen roundings.
     const double tol = 64 * eps * a.kappa;
     const auto& s0 = a.solutions[0];
     CHECK(s0.impulse.P_C.x() == Approx(Pn).epsilon(tol));
@@ -80,6 +82,7 @@ TEST_CASE("planar limit: impulse ratio, critical ratio and full impact match a 2
     for (int i = 0; i < 2; ++i) {
       const double sign = i == 0 ? 1 : -1;
       const V2 P = sign * Pn * dir;
+      // Relative, and absolute in rad/s for a yaw rate near zero: the rates here are at most a few rad/s.
       CHECK(s0.after[i].w_B.z() == Approx(p[i].omega + cross2(p[i].rho, P) / p[i].Izz).epsilon(tol).margin(tol));
     }
     // Critical ratio: the t relative velocity stops. Solve the 2x2 conditions for (P_n, P_t).
@@ -97,5 +100,9 @@ TEST_CASE("planar limit: impulse ratio, critical ratio and full impact match a 2
     CHECK(a.solutions[2].impulse.P_C.x() == Approx(Pfull.dot(nn)).epsilon(tol));
     CHECK(a.solutions[2].impulse.P_C.y() == Approx(Pfull.dot(tt)).epsilon(tol).margin(tol * Pfull.norm()));
     CHECK(std::abs(a.solutions[2].impulse.P_C.z()) <= tol * Pfull.norm());
+    ++checked;
   }
+  // Skipped: the random planar velocities do not approach along n by more than 1 m/s in about half the
+  // draws (140 of these 300): nothing to collide. At least 120 must be checked.
+  CHECK(checked >= 120);
 }

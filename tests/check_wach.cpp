@@ -1,4 +1,5 @@
-// Wach's strategy (eqs 21-22): plane along the initial sliding, P_z' = 0, ratio capped at CIR or GIR.
+// Wach's strategy (eqs 21-22) on seeded random collisions: plane along the initial sliding, P_z' = 0,
+// ratio capped at CIR or GIR.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -20,12 +21,13 @@ Analysis<double> capped_wach(const Scene<double>& s, WachLimit limit) {
 
 TEST_CASE("Wach's plane is at phi = atan2(V_rzi, V_rti) with P_t' = mu P_n and P_z' = 0", "[wach]") {
   std::mt19937_64 g(71);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const auto a = analyze(s, {Wach<double>{0.05, WachLimit::cir}});
     const auto& sol = a.solutions[0];
     const double phi = std::atan2(a.V_ri.z(), a.V_ri.y());
-    CHECK(*sol.impulse.plane_angle_deg * M_PI / 180 == Approx(phi).margin(8 * eps));
+    CHECK(std::abs(*sol.impulse.plane_angle_deg * M_PI / 180 - phi) <= 8 * eps);
     const double c = std::cos(phi), sn = std::sin(phi);
     const V3& P = sol.impulse.P_C;
     const double mu = *sol.impulse.mu;
@@ -35,12 +37,15 @@ TEST_CASE("Wach's plane is at phi = atan2(V_rzi, V_rti) with P_t' = mu P_n and P
     CHECK(std::abs(*sol.impulse.cir - eq19_cir(k, s.restitution)) <= ratio_tolerance(k, a.K, s.restitution, *sol.impulse.cir));
     CHECK(std::abs(*sol.impulse.gir - eq20_gir(k)) <= ratio_tolerance(k, a.K, 0.0, *sol.impulse.gir));
     CHECK(P.x() == Approx(eq18_Pn(k, a.m_prime, s.restitution, a.V_ri.x(), mu)).epsilon(32 * eps * a.kappa));
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
 TEST_CASE("Wach capped at its CIR leaves only out-of-plane sliding (swerve)", "[wach]") {
   std::mt19937_64 g(72);
   int swerving = 0;
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const auto a = capped_wach(s, WachLimit::cir);
@@ -50,15 +55,18 @@ TEST_CASE("Wach capped at its CIR leaves only out-of-plane sliding (swerve)", "[
     const double tol = 16 * eps * a.kappa * velocity_scale(s);
     CHECK(std::abs(along) <= tol);
     // What is left is the swerve: sliding across the initial direction, as the report computes it.
-    CHECK(sol.sliding_after == Approx(std::abs(across)).margin(tol));
-    CHECK(*sol.swerve_speed == Approx(across).margin(tol));
-    if (std::abs(across) > 1e-3) ++swerving;
+    CHECK(std::abs(sol.sliding_after - std::abs(across)) <= tol);
+    CHECK(std::abs(*sol.swerve_speed - across) <= tol);
+    if (std::abs(across) > 1e-3) ++swerving;  // 1 mm/s: a swerve, not rounding
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
   CHECK(swerving > 250);  // off the Critical Impulse Line the swerve is generic, not an exception
 }
 
 TEST_CASE("Wach capped at its GIR reverses in-plane sliding by eps, like Full Impact", "[wach]") {
   std::mt19937_64 g(73);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const auto a = capped_wach(s, WachLimit::gir);
@@ -66,18 +74,9 @@ TEST_CASE("Wach capped at its GIR reverses in-plane sliding by eps, like Full Im
     REQUIRE(sol.impulse.regime == Regime::capped);
     const double phi = *sol.impulse.plane_angle_deg * M_PI / 180;
     const double along_i = plane_components(phi, sol.V_ri).along, along_f = plane_components(phi, sol.V_rf).along;
-    CHECK(along_f == Approx(-s.restitution * along_i).margin(16 * eps * a.kappa * velocity_scale(s)));
+    CHECK(std::abs(along_f + s.restitution * along_i) <= 16 * eps * a.kappa * velocity_scale(s));
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
-TEST_CASE("Wach with no initial sliding warns and uses the t axis", "[wach]") {
-  std::mt19937_64 g(74);
-  Scene<double> s = random_scene(g);
-  // Give vehicle 2 the velocity that cancels the contact-plane part of the relative velocity.
-  const V3 V = relative_velocity_C(s);
-  s.body[1].v_W -= s.R_WC * V3(0, V.y(), V.z());
-  const auto sol = solve_one(s, Wach<double>{0.3, WachLimit::cir});
-  REQUIRE(sol.impulse.warnings.size() == 1);
-  CHECK(sol.impulse.warnings[0].code == WarningCode::plane_undefined);
-  CHECK(*sol.impulse.plane_angle_deg == 0.0);
-}

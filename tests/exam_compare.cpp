@@ -1,5 +1,13 @@
-// impact3d compare: it passes what matches, names what does not, reads the documented CSV, never passes
-// on what it did not compare, and answers hostile input with one error line.
+// impact3d compare on named inputs: it passes what matches, names what does not, reads the documented
+// CSV, never passes on what it did not compare, and answers hostile input with one error line.
+//
+// Where the expected answers come from: the reference results in verification/reference (32 cases, so
+// "N of 32 cases pass"), compared with themselves (a pass) or with copies altered here in one named field
+// (a failure naming that field); the rules are the README's (compare's pass rule, what --subset and a
+// CSV must hold, a comparison of nothing fails), the wording of the report lines (`FAIL case: field`,
+// `N of M cases pass`, `subset: ...`) is compare's own output, pinned here; the exit policy is the
+// README's ("Exit status": 1 with one `impact3d: error:` line and nothing on stdout for bad input, 1
+// with the report on stdout and nothing on stderr for a failed comparison).
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <chrono>

@@ -1,4 +1,5 @@
-// Full Impact (eqs 10-12) against its defining properties and against Cramer's rule written out here.
+// Full Impact (eqs 10-12) on seeded random collisions, against its defining properties and against
+// Cramer's rule written out here.
 #include <catch2/catch.hpp>
 
 #include "support.hpp"
@@ -22,28 +23,35 @@ double energy_after(const Scene<double>& s, const V3& P_C) {
 
 TEST_CASE("Full Impact at eps = 0 leaves no relative velocity", "[full]") {
   std::mt19937_64 g(51);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = with_restitution(random_scene(g), 0.0);
     const auto sol = solve_one(s, PcCrash<double>{1e6});
     REQUIRE(sol.impulse.regime == Regime::full);
     const double kappa = analyze(s, {PcCrash<double>{0}}).kappa;
     CHECK(sol.V_rf.cwiseAbs().maxCoeff() <= 16 * eps * kappa * velocity_scale(s));
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
 TEST_CASE("Full Impact at eps > 0 leaves -eps times the whole initial relative velocity", "[full]") {
   std::mt19937_64 g(52);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const auto sol = solve_one(s, PcCrash<double>{1e6});
     const double kappa = analyze(s, {PcCrash<double>{0}}).kappa;
     CHECK((sol.V_rf + s.restitution * sol.V_ri).cwiseAbs().maxCoeff() <= 16 * eps * kappa * velocity_scale(s));
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
 TEST_CASE("Full Impact at eps = 0 loses more energy than any impulse with the same P_n", "[full]") {
   std::mt19937_64 g(53);
   std::normal_distribution<double> gauss;
+  int checked = 0;
   for (int n = 0; n < 100; ++n) {
     const Scene<double> s = with_restitution(random_scene(g), 0.0);
     const V3 P = solve_one(s, PcCrash<double>{1e6}).impulse.P_C;
@@ -55,11 +63,14 @@ TEST_CASE("Full Impact at eps = 0 loses more energy than any impulse with the sa
       d *= 1e-3 * P.norm() / d.norm();
       CHECK(energy_after(s, P + d) > E);
     }
+    ++checked;
   }
+  CHECK(checked == 100);  // nothing in the loop skips a case
 }
 
 TEST_CASE("Full Impact equals eqs 10-12 (Cramer's rule, written out)", "[full]") {
   std::mt19937_64 g(54);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const auto a = analyze(s, {PcCrash<double>{1e6}});
@@ -73,5 +84,7 @@ TEST_CASE("Full Impact equals eqs 10-12 (Cramer's rule, written out)", "[full]")
                  f * (Vn * (a2 * b3 - a3 * b2) + Vt * (a3 * b1 - a1 * b3) + Vz * (a1 * b2 - a2 * b1)) / D);
     // Two solutions of one 3x3 system: each within about eps kappa of the exact one.
     CHECK((a.solutions[0].impulse.P_C - ref).norm() <= 16 * eps * a.kappa * ref.norm());
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }

@@ -1,5 +1,5 @@
-// Brach's independent impulse ratios (eqs 23-27) against the printed closed forms and the Critical
-// Impulse Line.
+// Brach's independent impulse ratios (eqs 23-27) on seeded random collisions, against the printed closed
+// forms and the Critical Impulse Line.
 #include <catch2/catch.hpp>
 
 #include "plane_closed_forms.hpp"
@@ -28,6 +28,7 @@ Critical eqs25_26(const M3& K, const V3& V, double e) {
 
 TEST_CASE("given ratios: P = (1, mu_t, mu_z) P_n with P_n of eq 24", "[brach]") {
   std::mt19937_64 g(81);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const double mu_t = 0.3, mu_z = -0.15;
@@ -37,11 +38,14 @@ TEST_CASE("given ratios: P = (1, mu_t, mu_z) P_n with P_n of eq 24", "[brach]") 
     CHECK(P.x() == Approx(Pn).epsilon(32 * eps * a.kappa));
     CHECK(P.y() == Approx(mu_t * Pn).epsilon(32 * eps * a.kappa));
     CHECK(P.z() == Approx(mu_z * Pn).epsilon(32 * eps * a.kappa));
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
 TEST_CASE("critical ratios equal eqs 25 and 26", "[brach]") {
   std::mt19937_64 g(82);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const double mu_t = 0.25, mu_z = 0.1;
@@ -58,11 +62,14 @@ TEST_CASE("critical ratios equal eqs 25 and 26", "[brach]") {
     const double scale = 16 * eps * a.kappa * velocity_scale(s);
     CHECK(std::abs(a.solutions[1].V_rf.y()) <= scale);
     CHECK(std::abs(a.solutions[2].V_rf.z()) <= scale);
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
 TEST_CASE("both critical: no sliding at all, on the Critical Impulse Line (eq 27)", "[brach]") {
   std::mt19937_64 g(83);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const Scene<double> s = random_scene(g);
     const auto a = analyze(s, {Brach<double>{std::nullopt, std::nullopt}});
@@ -82,17 +89,22 @@ TEST_CASE("both critical: no sliding at all, on the Critical Impulse Line (eq 27
     const double q = std::max(quotient_tolerance(1.0, c.dt, a.K, c.r, e), quotient_tolerance(1.0, c.dz, a.K, c.rz, e));
     CHECK(std::abs(*sol.impulse.mu_t - mt) <= 4 * amp * q);
     CHECK(std::abs(*sol.impulse.mu_z - mz) <= 4 * amp * q);
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
 TEST_CASE("the Critical Impulse Line direction solves K d ~ e_n", "[brach]") {
   // Along the CIL only the normal relative velocity changes: K d has no t or z component.
   std::mt19937_64 g(84);
+  int checked = 0;
   for (int n = 0; n < 300; ++n) {
     const auto a = analyze(random_scene(g), {PcCrash<double>{0}});
     const V3 Kd = a.K * a.space.cil_direction;
     CHECK(std::abs(Kd.y()) <= 16 * eps * a.K.norm());
     CHECK(std::abs(Kd.z()) <= 16 * eps * a.K.norm());
     CHECK(Kd.x() > 0);
+    ++checked;
   }
+  CHECK(checked == 300);  // nothing in the loop skips a case
 }

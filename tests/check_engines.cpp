@@ -100,6 +100,12 @@ TEST_CASE("generated and direct engines agree over 10000 random collisions, in u
   // error the cond J factor carries), one solve or closed form more for the impulses, states and energy,
   // and for the ratios a quotient whose first-order error (dN - mu dD) / D is what (1 + |mu|)^2 bounds.
   // The difference of two engines is at most the sum: 16 units for K, 32 for the rest.
+  // Every collision is compared (nothing skips one); a ratio is compared where the strategy reports it
+  // (pc-crash and wach report mu, gir and cir; brach its given or critical mu_t, mu_z and the critical
+  // values), so the ratio tally depends on the strategies drawn.
+  CHECK(K.count == cases);
+  CHECK(P.count == 4 * cases);
+  CHECK(R.count >= 3 * 4 * cases);  // at least three per result: mu, gir, cir or brach's two and a critical
   CHECK(K.max <= 16);
   CHECK(P.max <= 32);
   CHECK(V.max <= 32);

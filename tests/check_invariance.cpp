@@ -1,4 +1,5 @@
-// Physical results do not depend on the world's heading or on which vehicle is called 1.
+// Physical results do not depend on the world's heading or on which vehicle is called 1: seeded random
+// collisions solved as given and turned or relabelled.
 #include <catch2/catch.hpp>
 
 #include "support.hpp"
@@ -23,7 +24,7 @@ void check_same_physics(const Solution<double>& a, const Solution<double>& b, bo
   CHECK(std::abs(a.V_rf.y() - b.V_rf.y()) <= Vscale);
   CHECK(std::abs(a.V_rf.z() - sz * b.V_rf.z()) <= Vscale);
   CHECK(a.energy_loss == Approx(b.energy_loss).epsilon(tol_rel).margin(a.energy_before * tol_rel));
-  CHECK(a.sliding_after == Approx(b.sliding_after).margin(Vscale));
+  CHECK(std::abs(a.sliding_after - b.sliding_after) <= Vscale);
   for (int i = 0; i < 2; ++i) {
     const int j = swapped ? 1 - i : i;
     CHECK((a.after[i].w_B - b.after[j].w_B).norm() <= tol_rel * (1 + a.after[i].w_B.norm()));
@@ -37,6 +38,7 @@ void check_same_physics(const Solution<double>& a, const Solution<double>& b, bo
 TEST_CASE("turning the whole scene about world z changes no physical result", "[invariance]") {
   std::mt19937_64 g(101);
   std::uniform_real_distribution<double> u(-180, 180);
+  int checked = 0;
   for (int n = 0; n < 150; ++n) {
     const Scene<double> s = random_scene(g);
     const double turn = u(g);
@@ -56,11 +58,14 @@ TEST_CASE("turning the whole scene about world z changes no physical result", "[
       CHECK((Rz * a.solutions[k].P_W - b.solutions[k].P_W).norm() <= tol * a.solutions[k].P_W.norm());
       CHECK((Rz * a.solutions[k].after[0].v_W - b.solutions[k].after[0].v_W).norm() <= tol * velocity_scale(s));
     }
+    ++checked;
   }
+  CHECK(checked == 150);  // nothing in the loop skips a case
 }
 
 TEST_CASE("swapping which vehicle is called 1, with the normal reversed, changes no physical result", "[invariance]") {
   std::mt19937_64 g(102);
+  int checked = 0;
   for (int n = 0; n < 150; ++n) {
     const Scene<double> s = random_scene(g);
     Scene<double> w = s;
@@ -79,5 +84,7 @@ TEST_CASE("swapping which vehicle is called 1, with the normal reversed, changes
       check_same_physics(a.solutions[k], b.solutions[k], true, true, tol);
       CHECK((a.solutions[k].after[0].v_W - b.solutions[k].after[1].v_W).norm() <= tol * velocity_scale(s));
     }
+    ++checked;
   }
+  CHECK(checked == 150);  // nothing in the loop skips a case
 }

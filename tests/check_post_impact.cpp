@@ -1,0 +1,30 @@
+// Post-impact reporting on random collisions: the swerve against the final sliding rotated here.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "plane_closed_forms.hpp"
+
+using namespace impact3d;
+using namespace impact3d::test;
+
+TEST_CASE("swerve: the angle and the across-component of the final sliding", "[swerve]") {
+  std::mt19937_64 g(111);
+  int checked = 0;
+  for (int n = 0; n < 200; ++n) {
+    const Scene<double> s = random_scene(g);
+    const auto a = analyze(s, {PcCrash<double>{0.1}});
+    const auto& sol = a.solutions[0];
+    REQUIRE(sol.swerve_speed);
+    // Rotate the initial sliding onto +t: the final sliding's components are then (along, across).
+    const auto [along, across] = plane_components(std::atan2(sol.V_ri.z(), sol.V_ri.y()), sol.V_rf);
+    // Both sides rotate the same post-impact velocity, whose error is the solve's (eps kappa scale);
+    // an angle then errs by that over the final sliding speed (radians), twice for two evaluations.
+    const double vtol = 16 * eps * a.kappa * velocity_scale(s);
+    CHECK(std::abs(*sol.swerve_speed - across) <= vtol);
+    REQUIRE(sol.swerve_deg);
+    const double deg_tol = 2 * vtol / sol.sliding_after * 180 / M_PI;
+    CHECK(std::abs(*sol.swerve_deg - std::atan2(across, along) * 180 / M_PI) <= deg_tol);
+    ++checked;
+  }
+  CHECK(checked == 200);  // nothing in the loop skips a case
+}

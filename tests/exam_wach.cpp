@@ -1,0 +1,22 @@
+// Wach's strategy (eqs 21-22) where its plane is undefined: no initial sliding, so phi = atan2(V_rzi,
+// V_rti) (eq 21) has no direction. The known answer is the contract's (case-format.md, "warnings"): the
+// solution is still computed, on the fallback plane phi = 0 (the t axis), with a plane_undefined warning.
+#include <catch2/catch.hpp>
+
+#include "support.hpp"
+
+using namespace impact3d;
+using namespace impact3d::test;
+
+TEST_CASE("Wach with no initial sliding warns and uses the t axis", "[wach]") {
+  // One seeded collision (seed 74) with its sliding removed: not a random sweep, a constructed case.
+  std::mt19937_64 g(74);
+  Scene<double> s = random_scene(g);
+  // Give vehicle 2 the velocity that cancels the contact-plane part of the relative velocity.
+  const V3 V = relative_velocity_C(s);
+  s.body[1].v_W -= s.R_WC * V3(0, V.y(), V.z());
+  const auto sol = solve_one(s, Wach<double>{0.3, WachLimit::cir});
+  REQUIRE(sol.impulse.warnings.size() == 1);
+  CHECK(sol.impulse.warnings[0].code == WarningCode::plane_undefined);
+  CHECK(*sol.impulse.plane_angle_deg == 0.0);  // the fallback, exactly
+}
