@@ -59,22 +59,22 @@ TEST_CASE("strategy arrays and brach critical ratios", "[reader]") {
                                                R"([{"name": "wach", "mu": 0.4, "limit": "gir"},
                                                    {"name": "brach", "mu_t": "critical", "mu_z": -0.05}])"));
   REQUIRE(c.strategies.size() == 2);
-  CHECK(c.strategies[0].kind == io::StrategySpec::Kind::wach);
-  CHECK(c.strategies[0].limit == WachLimit::gir);
-  CHECK(!c.strategies[1].mu_t);
-  CHECK(c.strategies[1].mu_z->text == "-0.05");
+  CHECK(io::strategy_kind(c.strategies[0].kind).name == "wach");
+  CHECK(c.strategies[0].choice("limit") == "gir");
+  CHECK(!c.strategies[1].number("mu_t"));
+  CHECK(c.strategies[1].number("mu_z")->text == "-0.05");
 }
 
 TEST_CASE("command-line strategies use the same rules", "[reader]") {
   const auto s = io::read_strategy_option("wach:mu=0.35,limit=gir", 0);
-  CHECK(s.kind == io::StrategySpec::Kind::wach);
-  CHECK(s.mu.text == "0.35");
-  CHECK(s.limit == WachLimit::gir);
+  CHECK(io::strategy_kind(s.kind).name == "wach");
+  CHECK(s.number("mu")->text == "0.35");
+  CHECK(s.choice("limit") == "gir");
   const auto b = io::read_strategy_option("brach:mu_t=critical,mu_z=0.1", 1);
-  CHECK(!b.mu_t);
-  CHECK(b.mu_z->text == "0.1");
+  CHECK(!b.number("mu_t"));
+  CHECK(b.number("mu_z")->text == "0.1");
   const auto j = io::read_strategy_option(R"({"name": "pc-crash", "mu": 0.5})", 2);
-  CHECK(j.mu.text == "0.5");
+  CHECK(j.number("mu")->text == "0.5");
   try {
     io::read_strategy_option("pc-crash:mu=-1", 3);
     FAIL("accepted a negative mu");

@@ -62,9 +62,9 @@ TEST_CASE("exact solutions satisfy their constraints with no rounding", "[exact]
         // V_rf = V_ri - K P / m' (eq 9), exactly, from the states.
         CHECK(r.V_rf == Vec3<rational>(x.V_ri - x.K * r.impulse.P_C / x.m_prime));
         const auto& st = c.strategies[k];
-        if (st.kind == io::StrategySpec::Kind::brach) {
-          if (!st.mu_t) CHECK(r.V_rf.y() == 0);
-          if (!st.mu_z) CHECK(r.V_rf.z() == 0);
+        if (io::strategy_kind(st.kind).name == "brach") {
+          if (!st.number("mu_t")) CHECK(r.V_rf.y() == 0);
+          if (!st.number("mu_z")) CHECK(r.V_rf.z() == 0);
         }
         if (r.impulse.regime == Regime::full) CHECK(r.V_rf == Vec3<rational>(-s.restitution * x.V_ri));
       }
