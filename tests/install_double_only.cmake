@@ -1,0 +1,42 @@
+# A double-only build of the library (IMPACT3D_MULTIPRECISION=OFF: no program, tests or symbolic part),
+# installed into a scratch prefix; its exported targets must name no MPFR, GMP or quadmath, and
+# tests/consumer must build against it and print the same P_n as the full build's program.
+# Variables: SOURCE_DIR (the project), CONSUMER_DIR, WORK_DIR, EXAMPLE, CLI, GENERATOR, CXX.
+file(REMOVE_RECURSE ${WORK_DIR})
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX}
+                        -DCMAKE_BUILD_TYPE=Release -DIMPACT3D_MULTIPRECISION=OFF -DIMPACT3D_BUILD_CLI=OFF
+                        -DIMPACT3D_BUILD_TESTS=OFF -DIMPACT3D_BUILD_SYMBOLIC=OFF RESULT_VARIABLE rc OUTPUT_QUIET)
+if(rc)
+  message(FATAL_ERROR "configuring the double-only library failed")
+endif()
+foreach(step "--build;${WORK_DIR}/build" "--install;${WORK_DIR}/build;--prefix;${WORK_DIR}/prefix")
+  execute_process(COMMAND ${CMAKE_COMMAND} ${step} RESULT_VARIABLE rc OUTPUT_QUIET)
+  if(rc)
+    message(FATAL_ERROR "cmake ${step} failed for the double-only library")
+  endif()
+endforeach()
+file(GLOB exported ${WORK_DIR}/prefix/lib*/cmake/impact3d/impact3dTargets*.cmake)
+foreach(f IN LISTS exported)
+  file(READ ${f} text)
+  if(text MATCHES "MPFR|mpfr|gmp|quadmath")
+    message(FATAL_ERROR "${f} names a multiprecision library")
+  endif()
+endforeach()
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${CONSUMER_DIR} -B ${WORK_DIR}/consumer -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX}
+                        -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix RESULT_VARIABLE rc OUTPUT_QUIET)
+if(NOT rc)
+  execute_process(COMMAND ${CMAKE_COMMAND} --build ${WORK_DIR}/consumer RESULT_VARIABLE rc OUTPUT_QUIET)
+endif()
+if(rc)
+  message(FATAL_ERROR "the consumer did not build against the double-only library")
+endif()
+execute_process(COMMAND ${WORK_DIR}/consumer/consumer ${EXAMPLE} OUTPUT_VARIABLE pn RESULT_VARIABLE rc OUTPUT_STRIP_TRAILING_WHITESPACE)
+execute_process(COMMAND ${CLI} solve ${EXAMPLE} --format json OUTPUT_VARIABLE json RESULT_VARIABLE rc2)
+if(rc OR rc2)
+  message(FATAL_ERROR "running the consumer or the program failed")
+endif()
+string(JSON cli_pn GET "${json}" results 0 impulse contact 0)
+if(NOT pn STREQUAL cli_pn)
+  message(FATAL_ERROR "double-only consumer P_n ${pn} differs from the program's ${cli_pn}")
+endif()
+message(STATUS "double-only consumer P_n = ${pn}, as the program; no multiprecision library exported")
