@@ -109,9 +109,16 @@ int main(int argc, char** argv) {
   compare_cmd->add_option("reference", reference, "reference result (JSON file) or directory (verification/reference)")->required();
   compare_cmd->add_option("other", other, "the other tool's results: JSON file, directory of JSON files, or CSV")->required();
   // A tolerance that admits everything (inf) or nothing (< 0) is a usage error, not a verdict.
-  compare_cmd->add_option("--rtol", copt.rtol, "relative tolerance (default 1e-9)")->check(CLI::Range(0.0, 1e300));
-  compare_cmd->add_option("--atol", copt.atol, "absolute tolerance in the case's units (default 1e-9)")
-      ->check(CLI::Range(0.0, 1e300));
+  auto* rtol_opt =
+      compare_cmd->add_option("--rtol", copt.rtol, "relative tolerance (default 1e-9)")->check(CLI::Range(0.0, 1e300));
+  auto* atol_opt = compare_cmd->add_option("--atol", copt.atol, "absolute tolerance in the case's units (default 1e-9)")
+                       ->check(CLI::Range(0.0, 1e300));
+  compare_cmd
+      ->add_flag("--rtol-from-bound", copt.rtol_from_bound,
+                 "each case's tolerance from the other results' own rounding_bound (impact3d's result JSON): rtol = the "
+                 "largest of the case's, atol = rtol x the case's largest magnitude")
+      ->excludes(rtol_opt)
+      ->excludes(atol_opt);
   compare_cmd->add_flag("--all", copt.all_fields, "also require the reference's fields beyond the contract");
   compare_cmd->add_flag("--subset", copt.subset, "compare only what the other results contain (cases, results, fields); reported as a subset");
   auto* verify_cmd = app.add_subcommand("verify", "every engine at every precision against the 100-digit solve");

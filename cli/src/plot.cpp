@@ -15,6 +15,12 @@ namespace {
 
 using V3 = Vec3<double>;
 
+// Drawing heuristics, not rounding bounds (those are rounding.hpp's): a plot range narrower than this
+// fraction of its values is drawn widened, and a plane normal within this of the x axis takes the y axis
+// to span its drawn patch.
+constexpr double kFlatRange = 1e-9;
+constexpr double kNearlyParallel = 1e-6;
+
 struct Context {
   const io::CaseSpec& spec;
   const PlotOptions& o;
@@ -44,7 +50,7 @@ void draw(Context& c, const std::string& name, const std::string& script) {
 // A range [lo, hi] widened where it is empty, so that gnuplot draws a degenerate figure (a head-on
 // collision has no contact-plane impulse) instead of refusing it.
 std::pair<double, double> nonempty(double lo, double hi, double scale) {
-  if (hi - lo > 1e-9 * std::max({std::fabs(lo), std::fabs(hi), scale})) return {lo, hi};
+  if (hi - lo > kFlatRange * std::max({std::fabs(lo), std::fabs(hi), scale})) return {lo, hi};
   const double half = scale > 0 ? 0.5 * scale : std::max(1.0, 0.5 * std::fabs(lo));
   return {lo - half, hi + half};
 }
@@ -212,7 +218,7 @@ void impulse_space_view(Context& c) {
   auto patch = [&](const V3& nrm, const V3& centre) {
     std::string dat;
     V3 e1 = nrm.cross(V3::UnitX());
-    if (e1.norm() < 1e-6) e1 = nrm.cross(V3::UnitY());
+    if (e1.norm() < kNearlyParallel) e1 = nrm.cross(V3::UnitY());
     e1.normalize();
     const V3 e2 = nrm.cross(e1).normalized();
     for (int i = -2; i <= 2; ++i)

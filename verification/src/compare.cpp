@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <string_view>
 #include <system_error>
@@ -55,6 +56,8 @@ struct RefCase {
   std::vector<Leaf> top;                   // below the document's root
   std::vector<std::vector<Leaf>> results;  // below results[i]
   std::size_t fields = 0;                  // leaves that are compared (not null)
+  double largest = 0;                      // the largest magnitude among the numbers compared
+  std::vector<std::unordered_map<std::string, double>> numbers;  // by result: its numbers by dotted path
 };
 
 struct Field {
@@ -68,7 +71,12 @@ struct Field {
 struct CaseReport {
   std::string name;
   std::vector<Field> fields;
+  bool whole = false;           // the case failed as a whole (its one field says why)
+  std::optional<double> rtol;   // with --rtol-from-bound: the case's own
 };
+
+// The field of a result that --rtol-from-bound takes a case's tolerance from.
+constexpr const char* kBoundKey = "rounding_bound";
 
 std::string join(const std::vector<std::string>& parts) {
   std::string s;
@@ -161,9 +169,15 @@ RefCase load_reference(const std::string& name, const std::string& file) {
     // precision that computed the result: none is a result to compare.
     for (const auto& [k, v] : r.items())
       if (k != "strategy" && k != "warnings" && k != "rounding_bound") collect(v, {k}, false, leaves);
+    auto& numbers = rc.numbers.emplace_back();
+    for (const auto& l : leaves)
+      if (l.value.is_number()) numbers.emplace(l.dotted, l.value.get<double>());
   }
   const auto count = [&](const std::vector<Leaf>& v) {
-    for (const auto& l : v) rc.fields += l.value.is_null() ? 0 : 1;
+    for (const auto& l : v) {
+      rc.fields += l.value.is_null() ? 0 : 1;
+      if (l.value.is_number()) rc.largest = std::max(rc.largest, std::fabs(l.value.get<double>()));
+    }
   };
   count(rc.top);
   for (const auto& r : rc.results) count(r);
@@ -187,9 +201,13 @@ bool ends_with(const std::string& s, std::string_view tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+struct Tolerance {
+  double rtol, atol;
+};
+
 class Comparer {
  public:
-  explicit Comparer(const CompareOptions& o) : o_(o) {}
+  explicit Comparer(const CompareOptions& o) : o_(o), tol_{o.rtol, o.atol} {}
 
   bool required(const Leaf& l) const { return !o_.subset && (l.contract || o_.all_fields); }
 
@@ -201,8 +219,8 @@ class Comparer {
     // Angles in degrees wrap: 180 and -180 (or 0 and 360) are the same direction.
     if (!l.parts.empty() && ends_with(l.parts.back(), "_deg")) d = std::fabs(std::remainder(b - a, 360.0));
     // A relative error is reported only where the value stands above the absolute tolerance.
-    const double rel = std::fabs(a) > o_.atol ? d / std::fabs(a) : 0;
-    return {path, d <= o_.atol + o_.rtol * std::fabs(a), rel, fmt::format("reference {:.17g}, other {:.17g}", a, b), true};
+    const double rel = std::fabs(a) > tol_.atol ? d / std::fabs(a) : 0;
+    return {path, d <= tol_.atol + tol_.rtol * std::fabs(a), rel, fmt::format("reference {:.17g}, other {:.17g}", a, b), true};
   }
 
   Field mismatch(const std::string& path, const Leaf& l, const std::string& other, const char* why) const {
@@ -233,8 +251,73 @@ class Comparer {
   }
 
   // A result file: every reference leaf looked up in it; shape errors in `other` are failing fields.
+  // With --rtol-from-bound, at the tolerance the file's own rounding bound gives the case.
   CaseReport compare_json(const RefCase& rc, const json& other, const std::string& file) const {
     if (!other.is_object()) throw CaseError(file + ": $", "not an object (a result file is the contract's result JSON)");
+    if (!o_.rtol_from_bound) return compare_fields(rc, other);
+    std::string why;
+    const auto bound = case_bound(rc, other, why);
+    if (!bound) return CaseReport{rc.name, {{kBoundKey, false, 0, why}}, true, std::nullopt};
+    Comparer at = *this;
+    at.tol_ = {*bound, *bound * rc.largest};
+    CaseReport r = at.compare_fields(rc, other);
+    r.rtol = *bound;
+    return r;
+  }
+
+ private:
+  // --rtol-from-bound: the largest rounding_bound of the other side's results of this case (impact3d
+  // writes one per result: the relative bound of its precision, rounding.hpp); every result compared
+  // must give a finite one. Empty, with the reason, when one does not.
+  std::optional<double> case_bound(const RefCase& rc, const json& other, std::string& why) const {
+    const auto results = other.find("results");
+    if (results == other.end() || !results->is_array()) {
+      why = "no results to take the rounding bound from (--rtol-from-bound)";
+      return std::nullopt;
+    }
+    std::optional<double> bound;
+    for (std::size_t i = 0; i < rc.results.size() && i < results->size(); ++i) {
+      const json& o = (*results)[i];
+      if (!o.is_object()) continue;  // a failing field of its own
+      const auto b = o.find(kBoundKey);
+      const bool ok = b != o.end() && b->is_number() && std::isfinite(b->get<double>()) && b->get<double>() >= 0;
+      if (!ok) {
+        why = fmt::format("results.{}.{} is {}: --rtol-from-bound takes the case's tolerance from it", i, kBoundKey,
+                          b == o.end() ? std::string("missing") : describe(*b) + ", not a finite number >= 0");
+        return std::nullopt;
+      }
+      bound = std::max(bound.value_or(0.0), b->get<double>());
+    }
+    if (!bound) why = "no result gives a rounding bound (--rtol-from-bound)";
+    return bound;
+  }
+
+  // --rtol-from-bound: an angle is the direction of a vector whose components are held to atol, so a
+  // small vector has a poorly determined angle (a sliding that nearly stops swerves anywhere). The angle
+  // is held to the arc atol / L of that vector's length L in the reference, in degrees, and never to
+  // less than atol: L is the smaller of the sliding speeds before and after for the swerve angle, the
+  // contact-plane impulse for the plane angle, and |Delta-V| for the PDOF (its body x-y part is not in
+  // the file). Other fields, and an angle whose L the file does not give, are held to atol.
+  double angle_atol(const std::unordered_map<std::string, double>& numbers, const Leaf& l) const {
+    const auto get = [&](const std::string& path) {
+      const auto it = numbers.find(path);
+      return it == numbers.end() ? std::optional<double>() : std::optional<double>(std::fabs(it->second));
+    };
+    std::optional<double> length;
+    if (l.dotted == "sliding.swerve_angle_deg") {
+      const auto before = get("sliding.before"), after = get("sliding.after");
+      if (before && after) length = std::min(*before, *after);
+    } else if (l.dotted == "plane_angle_deg") {
+      const auto t = get("impulse.contact.1"), z = get("impulse.contact.2");
+      if (t && z) length = std::hypot(*t, *z);
+    } else if (l.parts.size() == 3 && l.parts[0] == "vehicles" && l.parts[2] == "pdof_deg") {
+      length = get("vehicles." + l.parts[1] + ".delta_v_magnitude");
+    }
+    if (!length || !(*length > 0)) return tol_.atol;
+    return std::max(tol_.atol, tol_.atol / *length * (180 / std::numbers::pi));
+  }
+
+  CaseReport compare_fields(const RefCase& rc, const json& other) const {
     CaseReport r{rc.name, {}};
     for (const auto& l : rc.top) {
       if (l.value.is_null()) continue;
@@ -264,8 +347,13 @@ class Comparer {
       }
       for (const auto& l : rc.results[i]) {
         if (l.value.is_null()) continue;
-        if (const json* v = find(o, l.parts)) r.fields.push_back(from_json(base + "." + l.dotted, l, *v));
-        else if (required(l)) r.fields.push_back(missing(base + "." + l.dotted));
+        if (const json* v = find(o, l.parts)) {
+          Comparer at = *this;
+          if (o_.rtol_from_bound) at.tol_.atol = angle_atol(rc.numbers[i], l);
+          r.fields.push_back(at.from_json(base + "." + l.dotted, l, *v));
+        } else if (required(l)) {
+          r.fields.push_back(missing(base + "." + l.dotted));
+        }
       }
     }
     if (results->size() > rc.results.size())
@@ -274,8 +362,8 @@ class Comparer {
     return r;
   }
 
- private:
   const CompareOptions& o_;
+  Tolerance tol_;
 };
 
 // What a CSV gives for one reference case.
@@ -450,6 +538,8 @@ int compare(const std::string& reference, const std::string& other, const Compar
     if (!o.subset) reports[k] = CaseReport{refs[k].name, {whole_case("case missing", detail)}};
   };
   if (fs::path(other).extension() == ".csv") {
+    if (o.rtol_from_bound)
+      throw CaseError(other, "--rtol-from-bound takes each case's tolerance from its result JSON's rounding_bound; a CSV has none");
     const auto csv = read_csv(other, refs, cmp);
     for (std::size_t k = 0; k < refs.size(); ++k) {
       const RefCase& rc = refs[k];
@@ -496,8 +586,15 @@ int compare(const std::string& reference, const std::string& other, const Compar
   std::string worst_where = "-";
   // Every line passes through printable(): case names, paths and values come from other people's files.
   const auto line = [](const std::string& s) { return io::printable(s) + "\n"; };
-  std::string table = line(fmt::format("{:<40} {:>7} {:>7}  {:>12}  {}", "case", "fields", "failed", "worst rel", "worst field"));
+  // With --rtol-from-bound each case's rtol is a column of its own.
+  const auto row = [&](const std::string& name, const std::string& fields, const std::string& failed, const std::string& rtol,
+                       const std::string& rel, const std::string& field) {
+    if (!o.rtol_from_bound) return line(fmt::format("{:<40} {:>7} {:>7}  {:>12}  {}", name, fields, failed, rel, field));
+    return line(fmt::format("{:<40} {:>7} {:>7}  {:>9}  {:>12}  {}", name, fields, failed, rtol, rel, field));
+  };
+  std::string table = row("case", "fields", "failed", "rtol", "worst rel", "worst field");
   std::string failures;
+  std::optional<double> rtol_lo, rtol_hi;
   for (std::size_t k = 0; k < refs.size(); ++k) {
     reference_fields += refs[k].fields;
     if (!reports[k]) continue;
@@ -505,7 +602,7 @@ int compare(const std::string& reference, const std::string& other, const Compar
     ++cases;
     const auto n = static_cast<std::size_t>(std::count_if(r.fields.begin(), r.fields.end(), [](const Field& f) { return f.compared; }));
     compared += n;
-    const bool whole = !r.fields.empty() && !r.fields.front().compared && r.fields.front().path == "case missing";
+    const bool whole = r.whole || (!r.fields.empty() && !r.fields.front().compared && r.fields.front().path == "case missing");
     if (n == 0 && !whole) r.fields.insert(r.fields.begin(), whole_case("nothing compared", "no field of the reference in the other results"));
     int failed = 0;
     const Field* named = nullptr;  // the failure with the largest relative error, else the first failure
@@ -529,13 +626,22 @@ int compare(const std::string& reference, const std::string& other, const Compar
       rel = named->rel > 0 ? fmt::format("{:.3e}", named->rel) : "-";
       field = named->rel > 0 ? named->path : named->path + ": " + named->detail;
     }
-    table += line(fmt::format("{:<40} {:>7} {:>7}  {:>12}  {}", r.name, n, failed, rel, field));
+    if (r.rtol) {
+      rtol_lo = std::min(rtol_lo.value_or(*r.rtol), *r.rtol);
+      rtol_hi = std::max(rtol_hi.value_or(*r.rtol), *r.rtol);
+    }
+    table += row(r.name, std::to_string(n), std::to_string(failed), r.rtol ? fmt::format("{:.2e}", *r.rtol) : "-", rel, field);
   }
   std::string out = table;
   if (!failures.empty()) out.append("\n").append(failures);
   if (compared == 0) out.append("\n").append(line(fmt::format("nothing was compared: {} gives no field of the reference", other)));
-  std::string summary = fmt::format("{} of {} cases pass (rtol {:g}, atol {:g}); worst relative error {:.3e} at {}",
-                                    cases - failed_cases, cases, o.rtol, o.atol, worst, worst_where);
+  const std::string tolerance =
+      !o.rtol_from_bound ? fmt::format("rtol {:g}, atol {:g}", o.rtol, o.atol)
+      : rtol_lo          ? fmt::format("rtol from each case's rounding_bound, {:.2e} to {:.2e}; atol rtol x its largest magnitude",
+                                       *rtol_lo, *rtol_hi)
+                         : std::string("rtol from each case's rounding_bound");
+  std::string summary = fmt::format("{} of {} cases pass ({}); worst relative error {:.3e} at {}", cases - failed_cases,
+                                    cases, tolerance, worst, worst_where);
   if (o.subset) summary += fmt::format("; subset: {} of {} reference fields compared", compared, reference_fields);
   out.append("\n").append(line(summary));
   std::fwrite(out.data(), 1, out.size(), stdout);

@@ -272,14 +272,14 @@ int verify(const VerifyOptions& o) {
   std::string report = fmt::format(
       "{} cases against their 100-digit solve (generated engine). Errors: max and rms in units of the type's eps;\n"
       "bound: max in units of eps x kappa(K) cond(J) (|v_IC1| + |v_IC2|)/V_rn (ratios also x (1 + |V_cp/V_n|)(1 + |mu|)),\n"
-      "must be <= 32;\n"
+      "must be <= {};\n"
       "digits: the fewest correct significant digits; worst: the case of the largest bound units.\n\n",
-      cases.size());
+      cases.size(), rounding::kResultRoundings);
   report += fmt::format("{:<12} {:<10} {:<15} {:>12} {:>10} {:>10} {:>8}  {}\n", "precision", "engine", "quantity", "max [eps]",
                         "rms [eps]", "bound", "digits", "worst");
   bool ok = true;
-  // The 100-digit reference itself, against exact fractions wherever a case's rotations are rational:
-  // 95 digits (100, less a few lost to conditioning and to the rounding of the inputs).
+  // The 100-digit reference itself, against exact fractions wherever a case's rotations are rational,
+  // to rounding::kExactCheckDigits digits.
   int exact_results = 0;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     std::optional<ExactAnalysis> x;
@@ -288,7 +288,7 @@ int verify(const VerifyOptions& o) {
     } catch (const Irrational&) {
       continue;
     } catch (const io::CaseError&) {
-      continue;  // a rotation orthonormal to 1e-12 but not exactly: there are no exact fractions to hold it to
+      continue;  // a rotation orthonormal within rounding::orthonormality_tolerance but not exactly: no exact fractions
     }
     for (std::size_t k = 0; k < x->results.size(); ++k) {
       if (!x->results[k].solution) continue;
@@ -297,15 +297,15 @@ int verify(const VerifyOptions& o) {
       const auto& R = refs[i].solutions[k].impulse.P_C;
       for (int j = 0; j < 3; ++j) {
         using std::abs;
-        if (abs(R(j) - to_floating<F>(P(j))) > F("1e-95") * R.norm()) {
+        if (abs(R(j) - to_floating<F>(P(j))) > rounding::exact_check_tolerance<F>() * R.norm()) {
           ok = false;
           report += fmt::format("exact: {} result {}: the 100-digit impulse differs from the exact one\n", cases[i].name, k);
         }
       }
     }
   }
-  report += fmt::format("exact: {} results of cases with rational rotations agree with the 100-digit solve to 95 digits\n\n",
-                        exact_results);
+  report += fmt::format("exact: {} results of cases with rational rotations agree with the 100-digit solve to {} digits\n\n",
+                        exact_results, rounding::kExactCheckDigits);
   for_each_scalar([&]<typename T>(std::type_identity<T>) {
     if constexpr (!std::is_same_v<T, F>) run_precision<T>(std::string(precision_name<T>), cases, refs, conds, report, ok);
   });

@@ -1,5 +1,5 @@
 // impact3d-reference: the reference outputs. Each case is solved at 100 decimal digits by both engines,
-// which must agree to at least 80 digits, and the contract's result is written at 40 significant digits;
+// which must agree to rounding::kEngineAgreementDigits (80) digits, and the contract's result is written at 40 significant digits;
 // a post-impact relative velocity within the 100-digit rounding bound is written as 0.
 #include <filesystem>
 #include <fstream>
@@ -7,6 +7,7 @@
 
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/numeric/rounding.hpp"
 
 namespace fs = std::filesystem;
 using namespace impact3d;
@@ -41,8 +42,9 @@ int main(int argc, char** argv) {
       const auto strategies = io::to_strategies<F>(spec);
       const Analysis<F> a = analyze(scene, strategies, Engine::generated);
       const Analysis<F> b = analyze(scene, strategies, Engine::direct);
-      if (engine_difference(a, b) > F("1e-80")) {
-        std::cerr << "impact3d-reference: " << in << ": the engines disagree beyond 80 digits\n";
+      if (engine_difference(a, b) > rounding::engine_agreement_tolerance<F>()) {
+        std::cerr << "impact3d-reference: " << in << ": the engines disagree beyond " << rounding::kEngineAgreementDigits
+                  << " digits\n";
         return 1;
       }
       std::ofstream(out / in.filename(), std::ios::binary) << io::result_json(spec, a, "100", 40, true);

@@ -10,6 +10,7 @@
 #include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/numeric/kinematics.hpp"
 #include "impact3d/numeric/rotation.hpp"
+#include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/strategy.hpp"
 #include "impact3d/numeric/units.hpp"
 
@@ -32,18 +33,16 @@ Mat3<Scalar> contact_rotation(const ContactSpec& c) {
                             to_scalar<Scalar>(c.tangent_roll));
   const Vec3<Scalar> n = to_vec3(c.normal, Scalar(1)), t = to_vec3(c.tangent, Scalar(1));
   if (n.squaredNorm() == Scalar(0)) throw CaseError(c.path + ".normal", "zero vector");
-  // Parallel when the tangent has no component across the normal, to the rounding of the products.
+  // Parallel when the tangent has too little component across the normal to build a frame from
+  // (rounding::parallel_within_rounding).
   const Scalar across = n.cross(t).squaredNorm(), scale = n.squaredNorm() * t.squaredNorm();
-  bool parallel;
-  if constexpr (is_exact_v<Scalar>) parallel = across == Scalar(0);
-  else parallel = !(across > Scalar(64) * std::numeric_limits<Scalar>::epsilon() * scale);
-  if (parallel)
+  if (rounding::parallel_within_rounding(across, scale))
     throw CaseError(c.path + ".tangent", "zero or parallel to the normal");
   return contact_frame_from_vectors(n, t);
 }
 
-// A proper rotation: exactly in exact arithmetic; otherwise R R^T = I within 1e-12 (decimals written to
-// 13 or more digits pass) and det R > 0.
+// A proper rotation: exactly in exact arithmetic; otherwise R R^T = I within
+// rounding::orthonormality_tolerance (decimals written to 13 or more digits pass) and det R > 0.
 template <typename Scalar>
 void check_rotation(const Mat3<Scalar>& R, const std::string& path) {
   const Mat3<Scalar> E = R * R.transpose() - Mat3<Scalar>::Identity();
@@ -53,7 +52,8 @@ void check_rotation(const Mat3<Scalar>& R, const std::string& path) {
       using std::abs;
       if (abs(E(i, j)) > worst) worst = abs(E(i, j));
     }
-  const bool orthonormal = is_exact_v<Scalar> ? worst == Scalar(0) : worst <= Scalar(1) / Scalar(1000000000000LL);
+  const bool orthonormal =
+      is_exact_v<Scalar> ? worst == Scalar(0) : worst <= rounding::orthonormality_tolerance<Scalar>();
   if (!orthonormal) {
     std::string by;  // the same three digits at every precision
     if constexpr (is_exact_v<Scalar>) by = scalar_to_text(worst.template convert_to<double>(), 3);

@@ -33,7 +33,8 @@ struct NumTraitsFor : Eigen::GenericNumTraits<T> {
     MulCost = 8
   };
   static T epsilon() { return std::numeric_limits<T>::epsilon(); }
-  // Eigen's default tolerance for approximate comparisons and rank decisions.
+  // Eigen's trait: the default tolerance of its isApprox and isZero. Not a bound of impact3d's (those are
+  // rounding.hpp's): impact3d calls isZero only on exact types, whose trait is exact.hpp's 0.
   static T dummy_precision() { return T(1000) * std::numeric_limits<T>::epsilon(); }
   static T highest() { return (std::numeric_limits<T>::max)(); }
   static T lowest() { return std::numeric_limits<T>::lowest(); }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/strategy.hpp"
 
 namespace impact3d {
@@ -44,7 +45,7 @@ BodyChange<Scalar> body_change(const RigidBody<Scalar>& before, const RigidBody<
   c.dv_W = after.v_W - before.v_W;
   c.dv = c.dv_W.norm();
   const Vec3<Scalar> dv_B = before.R_WB.transpose() * c.dv_W;
-  if (hypot(dv_B.x(), dv_B.y()) > Scalar(16) * std::numeric_limits<Scalar>::epsilon() * c.dv) {
+  if (hypot(dv_B.x(), dv_B.y()) > rounding::pdof_roundoff(c.dv)) {
     // The force is along Delta-V; it comes from the side opposite to it.
     Scalar deg = degrees(Scalar(atan2(dv_B.y(), Scalar(-dv_B.x()))));
     if (deg < Scalar(0)) deg += Scalar(360);
@@ -85,7 +86,7 @@ struct Solution {
   std::array<RigidBody<Scalar>, 2> after;      // post-impact states
   std::array<BodyChange<Scalar>, 2> change;
   Vec3<Scalar> V_ri, V_rf;                     // relative velocity at the impulse centre, contact axes
-  Scalar velocity_roundoff;                    // post-impact relative velocities below this are zero
+  Scalar velocity_roundoff;                    // post-impact relative velocities below this are zero (rounding.hpp)
   Scalar restitution_effective;                // -V_rnf / V_rni
   Scalar sliding_before, sliding_after;        // |(V_rt, V_rz)|
   std::optional<Scalar> swerve_deg;            // signed angle from initial to final sliding, t towards z
@@ -105,7 +106,6 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
   using std::abs;
   using std::atan2;
   using std::hypot;
-  const Scalar eps = std::numeric_limits<Scalar>::epsilon();
   Solution<Scalar> out;
   out.impulse = imp;
   out.warnings = imp.warnings;
@@ -117,10 +117,9 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
   s_after.body = out.after;
   out.V_ri = relative_velocity_C(s);
   out.V_rf = relative_velocity_C(s_after);
-  // Post-impact relative velocity is a difference of point velocities of size `scale`, through a
-  // solve of condition kappa: below `tol` it is zero to the precision of the computation.
-  const Scalar scale = v_Ic_W(s.body[0]).norm() + v_Ic_W(s.body[1]).norm() + out.V_ri.norm();
-  const Scalar tol = Scalar(16) * eps * kappa * scale;
+  // Post-impact relative velocity is a difference of point velocities, through a solve of condition
+  // kappa: below `tol` it is zero to the precision of the computation.
+  const Scalar tol = rounding::velocity_roundoff(s, kappa);
   out.velocity_roundoff = tol;
 
   out.restitution_effective = -out.V_rf.x() / out.V_ri.x();
@@ -153,8 +152,9 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
   if (!(imp.P_C.x() > Scalar(0)))
     out.warnings.push_back({WarningCode::tensile_normal_impulse,
                             "normal impulse P_n <= 0: the constraints demand a pulling contact"});
-  // The loss is a difference of energies of size energy_before; at eps = 1 it is zero in exact arithmetic.
-  if (out.energy_loss < -Scalar(16) * eps * kappa * out.energy_before)
+  // The loss is a difference of energies of size energy_before; at restitution 1 it is zero in exact
+  // arithmetic.
+  if (out.energy_loss < -rounding::energy_roundoff(kappa, out.energy_before))
     out.warnings.push_back({WarningCode::energy_gained, "kinetic energy gained: loss < 0"});
   return out;
 }

@@ -43,7 +43,8 @@ void flag_precision(Solution<Scalar>& s, const Scalar& amplification) {
     std::ostringstream text;
     text.precision(2);
     text << "rounding: the impulse, its ratios and everything computed from them may be off by up to " << bound
-         << " of their size at this precision (32 eps kappa(K) cond(J) (|v_IC1|+|v_IC2|)/V_rn (1+|V_cp/V_n|) = " << a
+         << " of their size at this precision (" << rounding::kResultRoundings
+         << " eps kappa(K) cond(J) (|v_IC1|+|v_IC2|)/V_rn (1+|V_cp/V_n|) = " << a
          << "), beyond the trusted " << rounding::kTrustedFraction << "; ";
     const std::string wider = rounding::precision_for(a);
     if (!std::isfinite(a))

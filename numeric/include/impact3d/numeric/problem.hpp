@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/strategy.hpp"
 #include "impact3d/numeric/types.hpp"
 
@@ -26,11 +27,11 @@ struct Problem {
   Scalar amplification = Scalar(1);  // of the inputs' rounding into the impulse (rounding.hpp)
 
   // A direction computed from a 3x3 solve is noise once its magnitude is below the solve's forward
-  // error, about eps * kappa(K) * scale; 16 covers the few roundings of assembling the rows.
+  // error (rounding::solve_roundoff).
   bool negligible(const Scalar& x, const Scalar& scale) const {
     using std::abs;
     if constexpr (std::numeric_limits<Scalar>::is_exact) return x == Scalar(0);
-    else return abs(x) <= Scalar(16) * std::numeric_limits<Scalar>::epsilon() * kappa * scale;
+    else return abs(x) <= rounding::solve_roundoff(kappa, scale);
   }
 };
 
