@@ -91,7 +91,7 @@ void write_exact(JsonWriter& w, const CaseSpec& spec, const std::string& scene_n
         w.key("angular_velocity").string("not rational in deg/s (pi / 180)");
       }
       w.key("delta_v");
-      string_array(w, t.v(s.dv_W[i], t.f.velocity));
+      string_array(w, t.v(s.change[i].dv_W, t.f.velocity));
       w.end_object();
     }
     w.end_array();

@@ -14,24 +14,17 @@
 
 namespace impact3d {
 
-struct ExactSolution {
-  ImpulseSolution<rational> impulse;
-  Vec3<rational> P_W;
-  std::array<RigidBody<rational>, 2> after;
-  std::array<Vec3<rational>, 2> dv_W;
-  Vec3<rational> V_rf;
-  rational energy_before, energy_after, energy_loss;
-};
+// The same post-impact pipeline as every other scalar type (post_impact.hpp), in exact arithmetic; the
+// quantities that need a square root or an angle are left to the 100-digit computation.
+using ExactSolution = Solution<rational>;
 
 struct ExactResult {
   std::optional<ExactSolution> solution;
   std::string not_rational;  // why not, when there is no solution
 };
 
-struct ExactAnalysis {
-  rational m_prime;
-  Mat3<rational> K;
-  Vec3<rational> V_ri;
+// The Problem solved (m', K, V_ri, eps), the maximum-energy-loss impulse, and each strategy's result.
+struct ExactAnalysis : Problem<rational> {
   Vec3<rational> P_max_loss;
   std::vector<ExactResult> results;
 };
@@ -40,22 +33,11 @@ template <typename E>
 ExactAnalysis exact_analyze_with(const Scene<rational>& s, const std::vector<Strategy<rational>>& strategies) {
   const Problem<rational> p = make_problem<E>(s);
   require_approaching(p);
-  ExactAnalysis a{p.m_prime, p.K, p.V_ri, E::full_impact(p, rational(0)), {}};
+  ExactAnalysis a{p, E::full_impact(p, rational(0)), {}};
   for (std::size_t k = 0; k < strategies.size(); ++k) {
     ExactResult r;
     try {
-      ExactSolution x;
-      x.impulse = solve_impulse<E>(p, strategies[k]);
-      x.P_W = s.R_WC * x.impulse.P_C;
-      x.after = {apply_impulse(s.body[0], x.P_W), apply_impulse(s.body[1], Vec3<rational>(-x.P_W))};
-      Scene<rational> after = s;
-      after.body = x.after;
-      for (int i = 0; i < 2; ++i) x.dv_W[i] = x.after[i].v_W - s.body[i].v_W;
-      x.V_rf = relative_velocity_C(after);
-      x.energy_before = kinetic_energy(s.body[0]) + kinetic_energy(s.body[1]);
-      x.energy_after = kinetic_energy(x.after[0]) + kinetic_energy(x.after[1]);
-      x.energy_loss = x.energy_before - x.energy_after;
-      r.solution = x;
+      r.solution = post_impact(s, solve_impulse<E>(p, strategies[k]), p.kappa);
     } catch (const Irrational& e) {
       r.not_rational = e.what();
     } catch (const std::overflow_error&) {

@@ -28,7 +28,7 @@ RigidBody<Scalar> apply_impulse(const RigidBody<Scalar>& b, const Vec3<Scalar>& 
 template <typename Scalar>
 struct BodyChange {
   Vec3<Scalar> dv_W;  // change of CG velocity, world axes
-  Scalar dv;          // its magnitude
+  Scalar dv{};        // its magnitude (0 in exact arithmetic, where it is not rational)
   // Principal direction of force on the vehicle, degrees clockwise from straight ahead seen from above
   // (0 = frontal, 90 = right side, 270 = left side), from the body-axes x-y part of Delta-V; and its
   // clock position (12 = frontal). Empty when Delta-V has no body x-y part.
@@ -43,15 +43,17 @@ BodyChange<Scalar> body_change(const RigidBody<Scalar>& before, const RigidBody<
   using std::hypot;
   BodyChange<Scalar> c;
   c.dv_W = after.v_W - before.v_W;
-  c.dv = c.dv_W.norm();
-  const Vec3<Scalar> dv_B = before.R_WB.transpose() * c.dv_W;
-  if (hypot(dv_B.x(), dv_B.y()) > rounding::pdof_roundoff(c.dv)) {
-    // The force is along Delta-V; it comes from the side opposite to it.
-    Scalar deg = degrees(Scalar(atan2(dv_B.y(), Scalar(-dv_B.x()))));
-    if (deg < Scalar(0)) deg += Scalar(360);
-    c.pdof_deg = deg;
-    int hour = static_cast<int>(floor(deg / Scalar(30) + ratio<Scalar>(1, 2))) % 12;
-    c.clock = hour == 0 ? 12 : hour;
+  if constexpr (!is_exact_v<Scalar>) {  // |Delta-V| and its angle are not rational
+    c.dv = c.dv_W.norm();
+    const Vec3<Scalar> dv_B = before.R_WB.transpose() * c.dv_W;
+    if (hypot(dv_B.x(), dv_B.y()) > rounding::pdof_roundoff(c.dv)) {
+      // The force is along Delta-V; it comes from the side opposite to it.
+      Scalar deg = degrees(Scalar(atan2(dv_B.y(), Scalar(-dv_B.x()))));
+      if (deg < Scalar(0)) deg += Scalar(360);
+      c.pdof_deg = deg;
+      int hour = static_cast<int>(floor(deg / Scalar(30) + ratio<Scalar>(1, 2))) % 12;
+      c.clock = hour == 0 ? 12 : hour;
+    }
   }
   return c;
 }
@@ -88,7 +90,7 @@ struct Solution {
   Vec3<Scalar> V_ri, V_rf;                     // relative velocity at the impulse centre, contact axes
   Scalar velocity_roundoff;                    // post-impact relative velocities below this are zero (rounding.hpp)
   Scalar restitution_effective;                // -V_rnf / V_rni
-  Scalar sliding_before, sliding_after;        // |(V_rt, V_rz)|
+  Scalar sliding_before{}, sliding_after{};    // |(V_rt, V_rz)|; 0 in exact arithmetic (not rational)
   std::optional<Scalar> swerve_deg;            // signed angle from initial to final sliding, t towards z
   std::optional<Scalar> swerve_speed;          // final sliding across the initial sliding direction
   AxisChange t_change, z_change;
@@ -123,13 +125,15 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
   out.velocity_roundoff = tol;
 
   out.restitution_effective = -out.V_rf.x() / out.V_ri.x();
-  out.sliding_before = hypot(out.V_ri.y(), out.V_ri.z());
-  out.sliding_after = hypot(out.V_rf.y(), out.V_rf.z());
-  if (out.sliding_before > tol) {
-    const Scalar cross = out.V_ri.y() * out.V_rf.z() - out.V_ri.z() * out.V_rf.y();
-    const Scalar dot = out.V_ri.y() * out.V_rf.y() + out.V_ri.z() * out.V_rf.z();
-    out.swerve_speed = cross / out.sliding_before;
-    if (out.sliding_after > tol) out.swerve_deg = degrees(Scalar(atan2(cross, dot)));
+  if constexpr (!is_exact_v<Scalar>) {  // sliding speeds and the swerve are not rational
+    out.sliding_before = hypot(out.V_ri.y(), out.V_ri.z());
+    out.sliding_after = hypot(out.V_rf.y(), out.V_rf.z());
+    if (out.sliding_before > tol) {
+      const Scalar cross = out.V_ri.y() * out.V_rf.z() - out.V_ri.z() * out.V_rf.y();
+      const Scalar dot = out.V_ri.y() * out.V_rf.y() + out.V_ri.z() * out.V_rf.z();
+      out.swerve_speed = cross / out.sliding_before;
+      if (out.sliding_after > tol) out.swerve_deg = degrees(Scalar(atan2(cross, dot)));
+    }
   }
   out.t_change = axis_change(out.V_ri.y(), out.V_rf.y(), tol);
   out.z_change = axis_change(out.V_ri.z(), out.V_rf.z(), tol);

@@ -142,7 +142,8 @@ Scalar velocity_scale(const Scene<Scalar>& s) {
 // of Figure 2) are taken against it, and the text report prints a velocity below it as 0.
 template <typename Scalar>
 Scalar velocity_roundoff(const Scene<Scalar>& s, const Scalar& kappa) {
-  return solve_roundoff(kappa, velocity_scale(s));
+  if constexpr (is_exact_v<Scalar>) return Scalar(0);  // and no norm, which is not rational
+  else return solve_roundoff(kappa, velocity_scale(s));
 }
 
 // The kinetic energy loss is a difference of energies of size energy_before, of states after a solve of
