@@ -35,9 +35,9 @@ TEST_CASE("given ratios: P = (1, mu_t, mu_z) P_n with P_n of eq 24", "[brach]") 
     const auto a = analyze(s, {Brach<double>{mu_t, mu_z}});
     const V3& P = a.solutions[0].impulse.P_C;
     const double Pn = a.m_prime * (1 + s.restitution) * a.V_ri.x() / (a.K(0, 0) + mu_t * a.K(0, 1) + mu_z * a.K(0, 2));
-    CHECK(P.x() == Approx(Pn).epsilon(32 * eps * a.kappa));
-    CHECK(P.y() == Approx(mu_t * Pn).epsilon(32 * eps * a.kappa));
-    CHECK(P.z() == Approx(mu_z * Pn).epsilon(32 * eps * a.kappa));
+    CHECK(P.x() == Approx(Pn).epsilon(rounding::relative_bound(a.kappa)));
+    CHECK(P.y() == Approx(mu_t * Pn).epsilon(rounding::relative_bound(a.kappa)));
+    CHECK(P.z() == Approx(mu_z * Pn).epsilon(rounding::relative_bound(a.kappa)));
     ++checked;
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
@@ -59,7 +59,7 @@ TEST_CASE("critical ratios equal eqs 25 and 26", "[brach]") {
     CHECK(std::abs(*a.solutions[0].impulse.mu_z_critical - mz) <= tol_z);
     CHECK(std::abs(*a.solutions[1].impulse.mu_t - mt) <= tol_t);
     CHECK(std::abs(*a.solutions[2].impulse.mu_z - mz) <= tol_z);
-    const double scale = 16 * eps * a.kappa * velocity_scale(s);
+    const double scale = rounding::velocity_roundoff(s, a.kappa);
     CHECK(std::abs(a.solutions[1].V_rf.y()) <= scale);
     CHECK(std::abs(a.solutions[2].V_rf.z()) <= scale);
     ++checked;
@@ -74,12 +74,12 @@ TEST_CASE("both critical: no sliding at all, on the Critical Impulse Line (eq 27
     const Scene<double> s = random_scene(g);
     const auto a = analyze(s, {Brach<double>{std::nullopt, std::nullopt}});
     const auto& sol = a.solutions[0];
-    const double vtol = 16 * eps * a.kappa * velocity_scale(s);
+    const double vtol = rounding::velocity_roundoff(s, a.kappa);
     CHECK(std::abs(sol.V_rf.y()) <= vtol);
     CHECK(std::abs(sol.V_rf.z()) <= vtol);
     // On the line through the maximum-energy-loss impulse along the CIL direction.
     const V3 off = sol.impulse.P_C - a.space.P_max_loss;
-    CHECK(off.cross(a.space.cil_direction).norm() <= 64 * eps * a.kappa * sol.impulse.P_C.norm());
+    CHECK(off.cross(a.space.cil_direction).norm() <= rounding::agreement_bound(a.kappa) * sol.impulse.P_C.norm());
     const Critical c = eqs25_26(a.K, a.V_ri, s.restitution);
     // eq 27 composes two quotients and divides by 1 - eta_t eta_z: the bound of each quotient, scaled
     // by how much eq 27 amplifies its inputs.
@@ -101,8 +101,8 @@ TEST_CASE("the Critical Impulse Line direction solves K d ~ e_n", "[brach]") {
   for (int n = 0; n < 300; ++n) {
     const auto a = analyze(random_scene(g), {PcCrash<double>{0}});
     const V3 Kd = a.K * a.space.cil_direction;
-    CHECK(std::abs(Kd.y()) <= 16 * eps * a.K.norm());
-    CHECK(std::abs(Kd.z()) <= 16 * eps * a.K.norm());
+    CHECK(std::abs(Kd.y()) <= rounding::arithmetic_roundoff(a.K.norm()));
+    CHECK(std::abs(Kd.z()) <= rounding::arithmetic_roundoff(a.K.norm()));
     CHECK(Kd.x() > 0);
     ++checked;
   }

@@ -57,7 +57,7 @@ TEST_CASE("the energy change equals -P . (V_ri + V_rf) / 2", "[conservation]") {
       const double work = -sol.impulse.P_C.dot(sol.V_ri + sol.V_rf) / 2;
       // Both sides are differences of energies of size energy_before (and |P| |V|), a few eps each,
       // the relative velocity carrying the solve's kappa.
-      const double tol = 32 * eps * a.kappa * (sol.energy_before + sol.impulse.P_C.norm() * velocity_scale(s));
+      const double tol = rounding::relative_bound(a.kappa) * (sol.energy_before + sol.impulse.P_C.norm() * velocity_scale(s));
       CHECK(std::abs(-sol.energy_loss - work) <= tol);
     }
     ++checked;

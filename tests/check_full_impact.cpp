@@ -29,7 +29,7 @@ TEST_CASE("Full Impact at eps = 0 leaves no relative velocity", "[full]") {
     const auto sol = solve_one(s, PcCrash<double>{1e6});
     REQUIRE(sol.impulse.regime == Regime::full);
     const double kappa = analyze(s, {PcCrash<double>{0}}).kappa;
-    CHECK(sol.V_rf.cwiseAbs().maxCoeff() <= 16 * eps * kappa * velocity_scale(s));
+    CHECK(sol.V_rf.cwiseAbs().maxCoeff() <= rounding::velocity_roundoff(s, kappa));
     ++checked;
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
@@ -42,7 +42,7 @@ TEST_CASE("Full Impact at eps > 0 leaves -eps times the whole initial relative v
     const Scene<double> s = random_scene(g);
     const auto sol = solve_one(s, PcCrash<double>{1e6});
     const double kappa = analyze(s, {PcCrash<double>{0}}).kappa;
-    CHECK((sol.V_rf + s.restitution * sol.V_ri).cwiseAbs().maxCoeff() <= 16 * eps * kappa * velocity_scale(s));
+    CHECK((sol.V_rf + s.restitution * sol.V_ri).cwiseAbs().maxCoeff() <= rounding::velocity_roundoff(s, kappa));
     ++checked;
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
@@ -83,7 +83,7 @@ TEST_CASE("Full Impact equals eqs 10-12 (Cramer's rule, written out)", "[full]")
                  f * (Vn * (a3 * c2 - a2 * c3) + Vt * (a1 * c3 - a3 * c1) + Vz * (a2 * c1 - a1 * c2)) / D,
                  f * (Vn * (a2 * b3 - a3 * b2) + Vt * (a3 * b1 - a1 * b3) + Vz * (a1 * b2 - a2 * b1)) / D);
     // Two solutions of one 3x3 system: each within about eps kappa of the exact one.
-    CHECK((a.solutions[0].impulse.P_C - ref).norm() <= 16 * eps * a.kappa * ref.norm());
+    CHECK((a.solutions[0].impulse.P_C - ref).norm() <= rounding::solve_roundoff(a.kappa, ref.norm()));
     ++checked;
   }
   CHECK(checked == 300);  // nothing in the loop skips a case

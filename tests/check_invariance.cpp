@@ -52,7 +52,7 @@ TEST_CASE("turning the whole scene about world z changes no physical result", "[
     const auto strategies = every_strategy(0.4);
     const auto a = analyze(s, strategies), b = analyze(r, strategies);
     // Rotating the inputs rounds each by an eps; the solves amplify that by kappa(K).
-    const double tol = 256 * eps * a.kappa;
+    const double tol = 4 * rounding::agreement_bound(a.kappa);
     for (std::size_t k = 0; k < strategies.size(); ++k) {
       check_same_physics(a.solutions[k], b.solutions[k], false, false, tol);
       CHECK((Rz * a.solutions[k].P_W - b.solutions[k].P_W).norm() <= tol * a.solutions[k].P_W.norm());
@@ -79,7 +79,7 @@ TEST_CASE("swapping which vehicle is called 1, with the normal reversed, changes
                                               Wach<double>{9.0, WachLimit::gir}, Brach<double>{0.2, 0.1},
                                               Brach<double>{std::nullopt, std::nullopt}};
     const auto a = analyze(s, as), b = analyze(w, bs);
-    const double tol = 256 * eps * a.kappa;
+    const double tol = 4 * rounding::agreement_bound(a.kappa);
     for (std::size_t k = 0; k < as.size(); ++k) {
       check_same_physics(a.solutions[k], b.solutions[k], true, true, tol);
       CHECK((a.solutions[k].after[0].v_W - b.solutions[k].after[1].v_W).norm() <= tol * velocity_scale(s));

@@ -65,12 +65,12 @@ TEST_CASE("Sliding Impact lies in the phi_FI plane with P_cp = mu P_n (eqs 15-18
       const V3 P = sol.impulse.P_C, Pf = full.impulse.P_C;
       const double Pcp = std::hypot(P.y(), P.z());
       // In the plane: (P_t, P_z) parallel and of the same sense as (P_tFI, P_zFI).
-      CHECK(std::abs(P.y() * Pf.z() - P.z() * Pf.y()) <= 32 * eps * a.kappa * P.norm() * Pf.norm());
+      CHECK(std::abs(P.y() * Pf.z() - P.z() * Pf.y()) <= rounding::relative_bound(a.kappa) * P.norm() * Pf.norm());
       CHECK(P.y() * Pf.y() + P.z() * Pf.z() > 0);
-      CHECK(Pcp == Approx(mu * P.x()).epsilon(32 * eps * a.kappa));
+      CHECK(Pcp == Approx(mu * P.x()).epsilon(rounding::relative_bound(a.kappa)));
       const double phi = *sol.impulse.plane_angle_deg * M_PI / 180;
       const PlaneCoefficients k = plane_coefficients(a.K, a.V_ri, std::cos(phi), std::sin(phi));
-      CHECK(P.x() == Approx(eq18_Pn(k, a.m_prime, s.restitution, a.V_ri.x(), mu)).epsilon(32 * eps * a.kappa));
+      CHECK(P.x() == Approx(eq18_Pn(k, a.m_prime, s.restitution, a.V_ri.x(), mu)).epsilon(rounding::relative_bound(a.kappa)));
       ++checked;
     }
   }
@@ -101,7 +101,7 @@ TEST_CASE("Sliding Impact at mu = GIR is the Full Impact", "[pc-crash]") {
       const PlaneCoefficients k = plane_coefficients(a.K, a.V_ri, std::cos(phi), std::sin(phi));
       const double Pf = full.impulse.P_C.norm();
       const double slope = full.impulse.P_C.x() + Pf * std::abs(k.b1) / std::abs(k.a1 + gir * k.b1);
-      CHECK((slide.impulse.P_C - full.impulse.P_C).norm() <= 2 * gir * delta * slope + 32 * eps * a.kappa * Pf);
+      CHECK((slide.impulse.P_C - full.impulse.P_C).norm() <= 2 * gir * delta * slope + rounding::relative_bound(a.kappa) * Pf);
       ++checked;
     }
   }
@@ -121,7 +121,7 @@ TEST_CASE("at mu = CIR the sliding along the phi_FI plane vanishes", "[pc-crash]
       if (!(cir > 0 && cir < gir)) continue;
       const auto sol = solve_one(s, PcCrash<double>{cir}, engine);
       const double in_plane = plane_components(*sol.impulse.plane_angle_deg * M_PI / 180, sol.V_rf).along;
-      CHECK(std::abs(in_plane) <= 16 * eps * a.kappa * velocity_scale(s));
+      CHECK(std::abs(in_plane) <= rounding::velocity_roundoff(s, a.kappa));
       ++checked;
     }
   }

@@ -19,7 +19,7 @@ TEST_CASE("swerve: the angle and the across-component of the final sliding", "[s
     const auto [along, across] = plane_components(std::atan2(sol.V_ri.z(), sol.V_ri.y()), sol.V_rf);
     // Both sides rotate the same post-impact velocity, whose error is the solve's (eps kappa scale);
     // an angle then errs by that over the final sliding speed (radians), twice for two evaluations.
-    const double vtol = 16 * eps * a.kappa * velocity_scale(s);
+    const double vtol = rounding::velocity_roundoff(s, a.kappa);
     CHECK(std::abs(*sol.swerve_speed - across) <= vtol);
     REQUIRE(sol.swerve_deg);
     const double deg_tol = 2 * vtol / sol.sliding_after * 180 / M_PI;

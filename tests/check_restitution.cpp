@@ -15,7 +15,7 @@ TEST_CASE("post-impact normal relative velocity is -eps times the initial one, e
     for (const auto& sol : a.solutions) {
       // V_rf comes from the post-impact point velocities, a difference of velocities of size
       // velocity_scale after a solve of condition kappa(K).
-      const double tol = 16 * eps * a.kappa * velocity_scale(s);
+      const double tol = rounding::velocity_roundoff(s, a.kappa);
       CHECK(std::abs(sol.V_rf.x() + s.restitution * sol.V_ri.x()) <= tol);
     }
     ++checked;

@@ -31,12 +31,12 @@ TEST_CASE("Wach's plane is at phi = atan2(V_rzi, V_rti) with P_t' = mu P_n and P
     const double c = std::cos(phi), sn = std::sin(phi);
     const V3& P = sol.impulse.P_C;
     const double mu = *sol.impulse.mu;
-    CHECK(std::abs(-sn * P.y() + c * P.z()) <= 32 * eps * a.kappa * P.norm());
-    CHECK(c * P.y() + sn * P.z() == Approx(mu * P.x()).epsilon(32 * eps * a.kappa).margin(32 * eps * a.kappa * P.norm()));
+    CHECK(std::abs(-sn * P.y() + c * P.z()) <= rounding::relative_bound(a.kappa) * P.norm());
+    CHECK(c * P.y() + sn * P.z() == Approx(mu * P.x()).epsilon(rounding::relative_bound(a.kappa)).margin(rounding::relative_bound(a.kappa) * P.norm()));
     const PlaneCoefficients k = plane_coefficients(a.K, a.V_ri, c, sn);
     CHECK(std::abs(*sol.impulse.cir - eq19_cir(k, s.restitution)) <= ratio_tolerance(k, a.K, s.restitution, *sol.impulse.cir));
     CHECK(std::abs(*sol.impulse.gir - eq20_gir(k)) <= ratio_tolerance(k, a.K, 0.0, *sol.impulse.gir));
-    CHECK(P.x() == Approx(eq18_Pn(k, a.m_prime, s.restitution, a.V_ri.x(), mu)).epsilon(32 * eps * a.kappa));
+    CHECK(P.x() == Approx(eq18_Pn(k, a.m_prime, s.restitution, a.V_ri.x(), mu)).epsilon(rounding::relative_bound(a.kappa)));
     ++checked;
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
@@ -52,7 +52,7 @@ TEST_CASE("Wach capped at its CIR leaves only out-of-plane sliding (swerve)", "[
     const auto& sol = a.solutions[0];
     REQUIRE(sol.impulse.regime == Regime::capped);
     const auto [along, across] = plane_components(*sol.impulse.plane_angle_deg * M_PI / 180, sol.V_rf);
-    const double tol = 16 * eps * a.kappa * velocity_scale(s);
+    const double tol = rounding::velocity_roundoff(s, a.kappa);
     CHECK(std::abs(along) <= tol);
     // What is left is the swerve: sliding across the initial direction, as the report computes it.
     CHECK(std::abs(sol.sliding_after - std::abs(across)) <= tol);
@@ -74,7 +74,7 @@ TEST_CASE("Wach capped at its GIR reverses in-plane sliding by eps, like Full Im
     REQUIRE(sol.impulse.regime == Regime::capped);
     const double phi = *sol.impulse.plane_angle_deg * M_PI / 180;
     const double along_i = plane_components(phi, sol.V_ri).along, along_f = plane_components(phi, sol.V_rf).along;
-    CHECK(std::abs(along_f + s.restitution * along_i) <= 16 * eps * a.kappa * velocity_scale(s));
+    CHECK(std::abs(along_f + s.restitution * along_i) <= rounding::velocity_roundoff(s, a.kappa));
     ++checked;
   }
   CHECK(checked == 300);  // nothing in the loop skips a case

@@ -40,7 +40,7 @@ TEST_CASE("Figure 8: mu = 1.0 is a Full Impact that reverses the t sliding", "[f
   CHECK(full.volume == "B");
   // By hand: -e V_rti = -0.1 * 25 mph = -2.5 mph, exactly in the equations; a solve of condition kappa
   // and point velocities of size velocity_scale leave 16 eps kappa of that scale.
-  CHECK(std::abs(full.V_rf.y() - (-0.1 * 25 * mph)) <= 16 * eps * a.kappa * velocity_scale(io::to_scene<double>(c)));
+  CHECK(std::abs(full.V_rf.y() - (-0.1 * 25 * mph)) <= rounding::velocity_roundoff(io::to_scene<double>(c), a.kappa));
   // Paper: -2.2 mph after (Virtual CRASH's own vehicle data), within 1 mph.
   CHECK(std::abs(full.V_rf.y() / mph - (-2.2)) < 1.0);
 }
@@ -63,7 +63,7 @@ TEST_CASE("Figure 8: mu = 0.4 is a Sliding Impact with continued t sliding and s
   // quotients of impulses each within 16 eps kappa of exact, and the sliding one a second solve: 64.
   const double r_full = a.solutions[0].impulse.P_C.z() / a.solutions[0].impulse.P_C.y();
   const double r_slide = slide.impulse.P_C.z() / slide.impulse.P_C.y();
-  CHECK(r_slide == Approx(r_full).epsilon(64 * eps * a.kappa));
+  CHECK(r_slide == Approx(r_full).epsilon(rounding::agreement_bound(a.kappa)));
 }
 
 TEST_CASE("Figure 8: Wach's plane is horizontal here and cannot reach the Full Impact", "[figure8]") {

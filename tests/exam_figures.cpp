@@ -5,6 +5,7 @@
 // them: a figure that computes its own geometry, or drops a sign or a warning, fails here.
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <limits>
 #include <regex>
 #include <sstream>
 
@@ -18,6 +19,7 @@ using namespace impact3d::test;
 
 namespace {
 
+constexpr double kEps = std::numeric_limits<double>::epsilon();
 const fs::path kWork = fs::temp_directory_path() / fmt::format("impact3d-figures-{}", ::getpid());
 
 // The gnuplot single-quoted strings of a script line, unescaped ('' is one quote).
@@ -107,15 +109,15 @@ TEST_CASE("every solution-plane figure states the report's angle, CIR, GIR and w
       const auto& P = r.at("impulse").at("contact");
       const double P_cp = std::hypot(P[1].get<double>(), P[2].get<double>());
       // 17-digit text both ways; the in-plane component is a dot product of a few roundings: 8 eps.
-      CHECK(std::fabs(P_n - P[0].get<double>()) <= 4 * 2.2e-16 * std::fabs(P[0].get<double>()));
-      CHECK(std::fabs(std::fabs(P_u) - P_cp) <= 8 * 2.2e-16 * (P_cp + std::fabs(P[0].get<double>())));
+      CHECK(std::fabs(P_n - P[0].get<double>()) <= 4 * kEps * std::fabs(P[0].get<double>()));
+      CHECK(std::fabs(std::fabs(P_u) - P_cp) <= 8 * kEps * (P_cp + std::fabs(P[0].get<double>())));
       // pc-crash sweeps mu over 0 to 1.5 GIR of eq 14: the GIR the report gives.
       if (kind == "pc-crash") {
         const std::string sweep = slurp(dir / fmt::format("sweep_mu_{}.gp", k + 1));
         const double top = number_after(line_starting(sweep, "set xrange [0:"), "set xrange [0:");
         const double gir = limits.at("gir").get<double>();
         // 1.5 GIR printed to 17 digits: the product's one rounding and the text's.
-        CHECK(std::fabs(top - 1.5 * gir) <= 4 * 2.2e-16 * std::fabs(1.5 * gir));
+        CHECK(std::fabs(top - 1.5 * gir) <= 4 * kEps * std::fabs(1.5 * gir));
         ++sweeps;
       }
     }

@@ -48,7 +48,7 @@ TEST_CASE("the US example and its SI twin give the same physics and consistent o
   const auto b = analyze(io::to_scene<double>(si), io::to_strategies<double>(si));
   // Each converted input is rounded once (here and in the library, in different orders), so inputs
   // differ by an eps or two; results move by that times kappa(K) and a few roundings more.
-  const double tol = 64 * eps * a.kappa;
+  const double tol = rounding::agreement_bound(a.kappa);
   CHECK((a.K - b.K).norm() <= tol * a.K.norm());
   for (std::size_t k = 0; k < a.solutions.size(); ++k) {
     CHECK((a.solutions[k].impulse.P_C - b.solutions[k].impulse.P_C).norm() <= tol * a.solutions[k].impulse.P_C.norm());

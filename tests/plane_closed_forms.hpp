@@ -45,7 +45,7 @@ inline double eq18_Pn(const PlaneCoefficients& k, double m_prime, double e, doub
 // is bounded by c eps |K| (1 + |r|) (1 + e) (1 + |mu|) / |D|, which grows as D cancels (a ratio near
 // infinity); c = 64 covers the roundings of both evaluations.
 inline double quotient_tolerance(double mu, double D, const M3& K, double r, double e) {
-  return 64 * eps * K.norm() * (1 + std::abs(r)) * (1 + e) * (1 + std::abs(mu)) / std::abs(D);
+  return 4 * rounding::arithmetic_roundoff(K.norm()) * (1 + std::abs(r)) * (1 + e) * (1 + std::abs(mu)) / std::abs(D);
 }
 
 inline double ratio_tolerance(const PlaneCoefficients& k, const M3& K, double e, double mu) {

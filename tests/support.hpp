@@ -74,10 +74,7 @@ inline std::vector<Strategy<double>> every_strategy(double mu) {
           Brach<double>{0.2, std::nullopt}, Brach<double>{std::nullopt, std::nullopt}};
 }
 
-// Scale of the velocities that enter a post-impact relative velocity: a difference of point
-// velocities of this size, after a solve whose forward error grows with kappa(K).
-inline double velocity_scale(const Scene<double>& s) {
-  return v_Ic_W(s.body[0]).norm() + v_Ic_W(s.body[1]).norm() + relative_velocity_C(s).norm();
-}
+// Scale of the velocities that enter a post-impact relative velocity (rounding.hpp).
+using rounding::velocity_scale;
 
 }  // namespace impact3d::test

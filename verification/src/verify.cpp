@@ -187,7 +187,8 @@ void measure(const Case& c, const Analysis<F>& ref, double cond, Engine engine, 
   using std::sqrt;
   rec("K", sqrt(kerr), sqrt(knorm), cond, "");
   for (std::size_t k = 0; k < ref.solutions.size(); ++k) {
-    const auto &s = a.solutions[k], &r = ref.solutions[k];
+    const auto& s = a.solutions[k];
+    const auto& r = ref.solutions[k];
     const std::string where = fmt::format(" result {}", k);
     // A result its precision flags is not held to the bound, and an undecided regime may differ: the
     // flag is the promise, and check_precision_flags tests that unflagged results keep it.
