@@ -5,7 +5,7 @@
 // Where the expected answers come from: the figure list of the README ("Impulse-space diagrams": the
 // contact plane, the impulse space, and per strategy a solution plane and two sweeps), the SVG and PNG
 // file signatures (`<?xml`, `\x89PNG\r\n\x1a\n`), and `impact3d solve --format json` of the same case for
-// the impulses; the hostile names are issue 8's reproductions.
+// the impulses; the hostile names are reproductions of reported attacks.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -119,7 +119,7 @@ TEST_CASE("without gnuplot: one clear line and a non-zero exit", "[plot]") {
   CHECK(r.err.find("gnuplot not found") != std::string::npos);
 }
 
-// Issue 8 reproductions: text from the case or the command line never reaches gnuplot or a shell as code.
+// Reproductions of reported attacks: text from the case or the command line never reaches gnuplot or a shell as code.
 TEST_CASE("a case name is drawn as text, never run by gnuplot", "[plot][hostile]") {
   auto doc = nlohmann::json::parse(slurp(fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json"));
   const fs::path dir = kWork / "names";

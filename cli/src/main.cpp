@@ -97,8 +97,8 @@ int main(int argc, char** argv) {
                         "precision holds; JSON always prints them all)")
       ->check(CLI::Range(1, 110));
   solve_cmd->add_option("--precision", precision,
-                        "arithmetic: double, long-double, float128, 50 or 100 decimal digits, or exact (fractions where "
-                        "the result is rational, beside the 100-digit solve)")
+                        "arithmetic, one of the list below (numbers name decimal digits; exact: fractions where the "
+                        "result is rational, beside the 100-digit solve)")
       ->check(CLI::IsMember(impact3d::io::precision_names()));
   solve_cmd->add_option("--engine", engine,
                         "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
