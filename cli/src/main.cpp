@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
                         "precision holds; JSON always prints them all)")
       ->check(CLI::Range(1, 110));
   solve_cmd->add_option("--precision", precision,
-                        "arithmetic, one of the list below (numbers name decimal digits; exact: fractions where the "
+                        "arithmetic, one of those listed (numbers name decimal digits; exact: fractions where the "
                         "result is rational, beside the 100-digit solve)")
       ->check(CLI::IsMember(impact3d::io::precision_names()));
   solve_cmd->add_option("--engine", engine,
