@@ -75,18 +75,13 @@ struct BrachKind {
 using StrategyKinds = std::tuple<PcCrashKind, WachKind, BrachKind>;
 inline constexpr std::size_t kStrategyKinds = std::tuple_size_v<StrategyKinds>;
 
-// f(Row{}) for the row `kind` (StrategySpec::kind).
+// f(Row{}) for the row `kind` (StrategySpec::kind); every row gives f's result type.
 template <typename F>
-decltype(auto) with_strategy_kind(std::size_t kind, F&& f) {
-  return [&]<std::size_t... I>(std::index_sequence<I...>) -> decltype(auto) {
-    using R = decltype(f(std::tuple_element_t<0, StrategyKinds>{}));
-    if constexpr (std::is_void_v<R>) {
-      ((kind == I ? (f(std::tuple_element_t<I, StrategyKinds>{}), 0) : 0), ...);
-    } else {
-      R out{};
-      ((kind == I ? (out = f(std::tuple_element_t<I, StrategyKinds>{}), 0) : 0), ...);
-      return out;
-    }
+auto with_strategy_kind(std::size_t kind, F&& f) {
+  return [&]<std::size_t... I>(std::index_sequence<I...>) {
+    decltype(f(std::tuple_element_t<0, StrategyKinds>{})) out{};
+    ((kind == I ? (out = f(std::tuple_element_t<I, StrategyKinds>{}), 0) : 0), ...);
+    return out;
   }(std::make_index_sequence<kStrategyKinds>{});
 }
 
