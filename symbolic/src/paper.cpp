@@ -22,6 +22,12 @@ matrix eq4_right(const Derivation& d, int body) {
   return Pi.mul_scalar(1 / b.m).add(cross(b.Jinv.mul(cross(b.r, Pi)), b.r));
 }
 
+matrix eq5(const Derivation& d, int body) {
+  const Body& b = d.body[body];
+  const matrix& Pi = body == 0 ? d.P1 : d.P2;
+  return b.T.mul(Pi).mul_scalar(1 / b.m).add(b.T.mul(cross(b.Jinv.mul(cross(b.r, Pi)), b.r)));
+}
+
 matrix eq6(const Derivation& d) {
   const Body &b1 = d.body[0], &b2 = d.body[1];
   const matrix t2 = b2.T.mul(d.P2).mul_scalar(1 / b2.m), t1 = b1.T.mul(d.P1).mul_scalar(1 / b1.m);
@@ -36,6 +42,42 @@ matrix eq8(const Derivation& d) {
   sum = sum.add(b1.T.mul(cross(b1.Jinv.mul(cross(b1.r, b1.T.transpose().mul(d.P))), b1.r)));
   sum = sum.add(b2.T.mul(cross(b2.Jinv.mul(cross(b2.r, b2.T.transpose().mul(d.P))), b2.r)));
   return sum.mul_scalar(-1);
+}
+
+matrix eq9() {
+  matrix out(3, 1);
+  for (int i = 1; i <= 3; ++i) {
+    const std::string n = std::to_string(i);
+    out(i - 1, 0) = -(sym("a" + n) * S("Pn") + sym("b" + n) * S("Pt") + sym("c" + n) * S("Pz"));
+  }
+  return out;
+}
+
+matrix eq17_middle() {
+  matrix out(3, 1);
+  for (int i = 1; i <= 3; ++i) {
+    const std::string n = std::to_string(i);
+    out(i - 1, 0) = -(sym("a" + n) * S("Pn") + sym("b" + n) * S("Pcp"));
+  }
+  return out;
+}
+
+matrix eq17_right() {
+  matrix out(3, 1);
+  for (int i = 1; i <= 3; ++i) {
+    const std::string n = std::to_string(i);
+    out(i - 1, 0) = -(sym("a" + n) + S("mu") * sym("b" + n)) * S("Pn");
+  }
+  return out;
+}
+
+matrix eq23() {
+  matrix out(3, 1);
+  for (int i = 1; i <= 3; ++i) {
+    const std::string n = std::to_string(i);
+    out(i - 1, 0) = -(sym("a" + n) + sym("b" + n) * S("mut") + sym("c" + n) * S("muz")) * S("Pn");
+  }
+  return out;
 }
 
 matrix eqs10_12() {
@@ -78,29 +120,33 @@ namespace {
 struct Eta {
   ex eta_t, mu_tc0, eta_z, mu_zc0;
 };
-Eta eta() {
-  const ex e = S("eps"), r = S("Vt") / S("Vn"), rz = S("Vz") / S("Vn");
+Eta eta(const ex& r) {
+  const ex e = S("eps"), rz = S("Vz") / S("Vn");
   const ex dt = (1 + e) * S("b2") - r * S("b1"), dz = (1 + e) * S("c3") - rz * S("c1");
   return {(r * S("c1") - (1 + e) * S("c2")) / dt, (r * S("a1") - (1 + e) * S("a2")) / dt,
           (rz * S("b1") - (1 + e) * S("b3")) / dz, (rz * S("a1") - (1 + e) * S("a3")) / dz};
 }
 }  // namespace
 
-ex eq25() {
-  const Eta h = eta();
+ex eq25(const ex& r) {
+  const Eta h = eta(r);
   return h.eta_t * S("muz") + h.mu_tc0;
 }
 ex eq26() {
-  const Eta h = eta();
+  const Eta h = eta(S("Vt") / S("Vn"));  // eta_z and mu_zC0 do not contain r
   return h.eta_z * S("mut") + h.mu_zc0;
 }
-ex eq27_t() {
-  const Eta h = eta();
+ex eq27_t(const ex& r) {
+  const Eta h = eta(r);
   return (h.eta_t * h.mu_zc0 + h.mu_tc0) / (1 - h.eta_t * h.eta_z);
 }
-ex eq27_z() {
-  const Eta h = eta();
+ex eq27_z(const ex& r) {
+  const Eta h = eta(r);
   return (h.eta_z * h.mu_tc0 + h.mu_zc0) / (1 - h.eta_t * h.eta_z);
+}
+
+ex eq29() {
+  return (S("snz") / S("cnz")) / (S("sni") * S("cpo") - S("cni") * S("spo"));
 }
 
 matrix appendix_T(const ex& cg, const ex& sg, const ex& ct, const ex& st, const ex& cp, const ex& sp) {

@@ -13,8 +13,19 @@ namespace impact3d::symbolic::paper {
 matrix eq4_middle(const Derivation& d, int body);
 // eq 4, right-hand expression: P/m + [J^-1 (r x P)] x r.
 matrix eq4_right(const Derivation& d, int body);
+// eq 5, right-hand side as printed: T_i (P_i / m_i) + T_i ([J_i^-1 (r_i x P_i)] x r_i).
+matrix eq5(const Derivation& d, int body);
 matrix eq6(const Derivation& d);
 matrix eq8(const Derivation& d);
+
+// eq 9 as printed, m'(V_rf - V_ri) = -(a_i P_n + b_i P_t + c_i P_z), in the symbols a1..c3, Pn, Pt, Pz.
+matrix eq9();
+// eq 17 as printed, m'(V_f - V_i) along n, CP, b: -(a_i P_n + b_i P_CP) (middle) and -(a_i + mu b_i) P_n
+// (right), in the symbols a1..b3 (which the audit reads two ways), Pn, Pcp, mu.
+matrix eq17_middle();
+matrix eq17_right();
+// eq 23 as printed: -(a_i + b_i mu_t + c_i mu_z) P_n.
+matrix eq23();
 
 // eqs 10-12 in the symbols a1..c3, Vn, Vt, Vz, mp, eps.
 matrix eqs10_12();
@@ -30,10 +41,13 @@ ex eq18();  // P_n
 ex eq19();  // CIR
 ex eq20();  // GIR
 ex eq24();  // P_n
-ex eq25();  // mu_tC given mu_z
-ex eq26();  // mu_zC given mu_t
-ex eq27_t();
-ex eq27_z();
+// eq 25 leaves r undefined for the t axis: the audit passes each reading of it.
+ex eq25(const ex& r);  // mu_tC given mu_z
+ex eq26();             // mu_zC given mu_t (r_z = V_rzi / V_rni, defined there)
+ex eq27_t(const ex& r);
+ex eq27_z(const ex& r);
+// eq 29 in the symbols cnz, snz (n_z), cni, sni (n_i), cpo, spo (psi_o): tan n_z / sin(n_i - psi_o).
+ex eq29();
 
 // Appendix A. T(gamma, theta, phi) as printed, in symbols cg, sg, ct, st, cp, sp.
 matrix appendix_T(const ex& cg, const ex& sg, const ex& ct, const ex& st, const ex& cp, const ex& sp);
