@@ -2,6 +2,7 @@
 
 #include <set>
 #include <sstream>
+#include <string_view>
 #include <stdexcept>
 
 #include "audit_checks.hpp"
@@ -70,35 +71,38 @@ std::string symbol_meaning(const std::string& s) {
       {"cpo", "cos psi_o: yaw of the contact normal in the world frame"},
       {"spo", "sin psi_o"}};
   if (auto it = fixed.find(s); it != fixed.end()) return it->second;
+  // Built with append: GCC 12 warns falsely (-Wrestrict) on chains of operator+ with single characters.
+  auto cat = [](std::initializer_list<std::string_view> parts) {
+    std::string out;
+    for (auto p : parts) out.append(p);
+    return out;
+  };
+  auto ch = [&](std::size_t i) { return std::string_view(s).substr(i, 1); };
   static const char* axis_name[3] = {"n", "t", "z"};
-  auto vehicle = [](char c) { return std::string("vehicle ") + c; };
+  static const char* plane_axis[3] = {"n", "u", "w"};
+  const std::string vehicle = s.empty() ? "" : cat({"vehicle ", ch(s.size() - 1)});
   // a1..c3: K's entries; the letter is the column (a: n, b: t, c: z), the digit the row.
   if (s.size() == 2 && (s[0] == 'a' || s[0] == 'b' || s[0] == 'c') && s[1] >= '1' && s[1] <= '3')
-    return std::string("entry of K (eq 9): row ") + axis_name[s[1] - '1'] + ", column " + axis_name[s[0] - 'a'];
-  if (s.size() == 3 && s[0] == 'p' && (s[1] == 'a' || s[1] == 'b' || s[1] == 'c') && s[2] >= '1' && s[2] <= '3') {
-    static const char* plane_axis[3] = {"n", "u", "w"};
-    return std::string("entry of K in the plane frame (n, u, w): row ") + plane_axis[s[2] - '1'] + ", column " +
-           plane_axis[s[1] - 'a'];
-  }
-  if (s.size() == 2 && s[0] == 'f' && s[1] >= '1' && s[1] <= '8') return "Appendix A's " + s + " (printed definition)";
-  if (s.size() == 2 && s[0] == 'm' && (s[1] == '1' || s[1] == '2')) return "mass of " + vehicle(s[1]);
+    return cat({"entry of K (eq 9): row ", axis_name[s[1] - '1'], ", column ", axis_name[s[0] - 'a']});
+  if (s.size() == 3 && s[0] == 'p' && (s[1] == 'a' || s[1] == 'b' || s[1] == 'c') && s[2] >= '1' && s[2] <= '3')
+    return cat({"entry of K in the plane frame (n, u, w): row ", plane_axis[s[2] - '1'], ", column ", plane_axis[s[1] - 'a']});
+  if (s.size() == 2 && s[0] == 'f' && s[1] >= '1' && s[1] <= '8') return cat({"Appendix A's ", s, " (printed definition)"});
+  if (s.size() == 2 && s[0] == 'm' && (s[1] == '1' || s[1] == '2')) return cat({"mass of ", vehicle});
   if (s.size() == 2 && (s[0] == 'x' || s[0] == 'y' || s[0] == 'z') && (s[1] == '1' || s[1] == '2'))
-    return std::string("impulse centre relative to the CG of ") + vehicle(s[1]) + ", " + s[0] + " (vehicle axes)";
+    return cat({"impulse centre relative to the CG of ", vehicle, ", ", ch(0), " (vehicle axes)"});
   if (s.size() == 3 && s[0] == 'I' && (s[2] == '1' || s[2] == '2'))
-    return std::string("principal moment of inertia of ") + vehicle(s[2]) + " about its " + s[1] + " axis";
+    return cat({"principal moment of inertia of ", vehicle, " about its ", ch(1), " axis"});
   if (s.size() == 3 && (s[0] == 'c' || s[0] == 's') && s[1] == 'g')
-    return std::string(s[0] == 'c' ? "cos" : "sin") + " gamma_" + s[2] + ": heading of " + vehicle(s[2]) +
-           " relative to the contact axes";
+    return cat({s[0] == 'c' ? "cos" : "sin", " gamma_", ch(2), ": heading of ", vehicle, " relative to the contact axes"});
   if (s.size() == 3 && s[0] == 'P' && (s[1] == '1' || s[1] == '2'))
-    return "impulse on " + vehicle(s[1]) + ", its own " + s[2] + " axis";
+    return cat({"impulse on vehicle ", ch(1), ", its own ", ch(2), " axis"});
   if (s.size() == 6 && s.rfind("ji", 0) == 0 && s[3] == '_')
-    return std::string("entry (") + s[4] + ", " + s[5] + ") of the inverse inertia tensor of " + vehicle(s[2]) +
-           " (symmetric; an identity must hold for every value)";
+    return cat({"entry (", ch(4), ", ", ch(5), ") of the inverse inertia tensor of vehicle ", ch(2),
+                " (symmetric; an identity must hold for every value)"});
   if (s.size() == 5 && s[0] == 'J' && s[2] == '_')
-    return std::string("entry (") + s[3] + ", " + s[4] + ") of the inertia tensor of " + vehicle(s[1]);
+    return cat({"entry (", ch(3), ", ", ch(4), ") of the inertia tensor of vehicle ", ch(1)});
   if (s.size() == 5 && s[0] == 'T' && s[2] == '_')
-    return std::string("entry (row ") + s[3] + ", column " + s[4] + ") of T_" + s[1] + ", " + vehicle(s[1]) +
-           " axes to contact axes";
+    return cat({"entry (row ", ch(3), ", column ", ch(4), ") of T_", ch(1), ", vehicle ", ch(1), " axes to contact axes"});
   throw std::logic_error("audit: no meaning written for the symbol " + s);
 }
 
