@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include "impact3d/io/json_literals.hpp"
+#include "impact3d/io/render.hpp"
 #include "support.hpp"
 
 using namespace impact3d;
@@ -91,4 +92,27 @@ TEST_CASE("paths print keys that are not identifiers quoted and escaped", "[read
   CHECK(io::member_path("$", "vehicles/0/mass") == "$[\"vehicles/0/mass\"]");
   CHECK(io::member_path("$", "0") == "$[\"0\"]");
   CHECK(io::member_path("$", "a\nb\x1b[31m") == "$[\"a\\nb\\x1B[31m\"]");
+}
+
+TEST_CASE("a description is read, echoed in the result, and printed escaped like the name", "[reader]") {
+  // The case author's text: a newline and an escape sequence must not reach a terminal as such.
+  std::string text = minimal();
+  text.insert(1, R"("name": "a\u001b[31mred", "description": "line one\nline two", )");
+  const io::CaseSpec c = io::read_case(text);
+  CHECK(c.description == "line one\nline two");
+  const std::string report = io::render(c, "double", {"text"});
+  CHECK(report.find("impact3d: a\\x1B[31mred (units SI") != std::string::npos);
+  CHECK(report.find("line one\\nline two\n") != std::string::npos);
+  CHECK(report.find('\x1b') == std::string::npos);
+  const std::string json = io::render(c, "double", {"json"});
+  CHECK(json.find(R"("description": "line one\nline two")") != std::string::npos);
+  // A description that is not a string is an error at its path.
+  std::string bad = minimal();
+  bad.insert(1, R"("description": 3, )");
+  try {
+    io::read_case(bad);
+    FAIL("accepted a numeric description");
+  } catch (const io::CaseError& e) {
+    CHECK(e.line() == "$.description: expected a string, got a number");
+  }
 }

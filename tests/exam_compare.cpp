@@ -13,6 +13,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -239,12 +240,103 @@ TEST_CASE("without --subset every case, result and contract field must be there"
   check_fails(d);
   CHECK(has(d.out, "FAIL general_1: case missing"));
   CHECK(has(d.out, "1 of 32 cases pass"));
-  // A field of the contract left out of a CSV is missing for each result.
+  // The coverage line counts what was given: 1 of 32 cases, 2 of its 4 results.
+  CHECK(has(r.out, "coverage: 1 of 32 reference cases, 2 of "));
+  // A CSV row for one result of four: the other three are missing, each by name.
   const Run f = run_cli(fmt::format("compare '{}' '{}'", kReference,
-                                    write("no_loss.csv", "case,result,regime\nfig8_side_impact,0,full\n")));
+                                    write("one_row.csv", "case,result,regime\nfig8_side_impact,0,full\n")));
   check_fails(f);
-  CHECK(has(f.out, "FAIL fig8_side_impact: results.0.energy.loss: missing"));
-  CHECK(has(f.out, "FAIL fig8_side_impact: coefficients.m_prime: missing"));
+  for (int i : {1, 2, 3}) CHECK(has(f.out, fmt::format("FAIL fig8_side_impact: results.{}: missing (no row)", i)));
+  CHECK(has(f.out, "coverage: 1 of 1 reference cases, 1 of 4 results given"));
+}
+
+TEST_CASE("a CSV is compared on the columns it has, and the report names them with their counts", "[compare]") {
+  // One component of one vector, for every result: passes, compares 4 values and says which.
+  const auto doc = reference();
+  std::string csv = "case,result,relative_velocity.after.1\n";
+  for (int i = 0; i < 4; ++i)
+    csv += fmt::format("fig8_side_impact,{},{:.17g}\n", i, doc["results"][i]["relative_velocity"]["after"][1].get<double>());
+  const Run r = run_cli(fmt::format("compare '{}' '{}'", kReference, write("one_column.csv", csv)));
+  INFO(r.out << r.err);
+  CHECK(r.status == 0);
+  CHECK(!has(r.out, "FAIL"));
+  CHECK(has(r.out, "fields compared: 4 values in the CSV's 1 column (only these;"));
+  CHECK(has(r.out, "relative_velocity.after.1 x4"));
+  // An empty cell in that column is a missing value of a field the CSV claims.
+  std::string holed = csv;
+  holed.replace(holed.find("fig8_side_impact,2,"), holed.find('\n', holed.find("fig8_side_impact,2,")) - holed.find("fig8_side_impact,2,"),
+                "fig8_side_impact,2,");
+  const Run h = run_cli(fmt::format("compare '{}' '{}'", kReference, write("holed.csv", holed)));
+  check_fails(h);
+  CHECK(has(h.out, "FAIL fig8_side_impact: results.2.relative_velocity.after.1: missing (an empty cell"));
+}
+
+namespace {
+
+// The reference fig8 file with `change` applied to every number below the paths given, in every result.
+std::string altered(const std::vector<std::string>& keys, const std::function<void(nlohmann::json&, const std::string&)>& change) {
+  auto doc = reference();
+  for (auto& r : doc["results"])
+    for (const auto& k : keys) change(r, k);
+  return write("altered.json", doc.dump());
+}
+
+void scale_numbers(nlohmann::json& v, double f) {
+  if (v.is_number_float() || v.is_number_integer()) v = v.get<double>() * f;
+  else if (v.is_object() || v.is_array())
+    for (auto& x : v) scale_numbers(x, f);
+}
+
+}  // namespace
+
+TEST_CASE("compare diagnoses an opposite sign convention, exchanged vehicles and a unit factor", "[compare]") {
+  // Opposite convention: the impulse, the relative velocities and the vehicles' changes negated.
+  const Run neg = run_cli(fmt::format("compare '{}' '{}'", kReference,
+                                      altered({"impulse", "relative_velocity"}, [](nlohmann::json& r, const std::string& k) {
+                                        scale_numbers(r[k], -1);
+                                      })));
+  check_fails(neg);
+  CHECK(has(neg.out, "diagnosis: "));
+  CHECK(has(neg.out, "failing numbers are the reference negated"));
+  CHECK(has(neg.out, "the normal n points into vehicle 1"));
+  // Vehicles numbered the other way.
+  const Run swapped = run_cli(fmt::format("compare '{}' '{}'", kReference,
+                                          altered({"vehicles"}, [](nlohmann::json& r, const std::string& k) {
+                                            std::swap(r[k][0], r[k][1]);
+                                          })));
+  check_fails(swapped);
+  CHECK(has(swapped.out, "failing numbers are the other vehicle's reference values"));
+  // Velocities written in mph against an SI reference: x 1/0.44704.
+  const Run mph = run_cli(fmt::format("compare '{}' '{}'", kReference,
+                                      altered({"relative_velocity"}, [](nlohmann::json& r, const std::string& k) {
+                                        scale_numbers(r[k], 1 / 0.44704);
+                                      })));
+  check_fails(mph);
+  CHECK(has(mph.out, "differ from the reference by a unit factor (x 2.23694, m/s -> mph"));
+  // A failure with no pattern gets no diagnosis.
+  auto doc = reference();
+  doc["results"][1]["impulse"]["contact"][0] = doc["results"][1]["impulse"]["contact"][0].get<double>() * 1.01;
+  const Run plain = run_cli(fmt::format("compare '{}' '{}'", kReference, write("fig8_side_impact.json", doc.dump())));
+  check_fails(plain);
+  CHECK(!has(plain.out, "diagnosis"));
+}
+
+TEST_CASE("the summary names the worst failure whatever kind of field it is", "[compare]") {
+  auto doc = reference();
+  doc["results"][2]["regime"] = "full";
+  doc["results"][1]["impulse"]["contact"][0] = doc["results"][1]["impulse"]["contact"][0].get<double>() * (1 + 1e-3);
+  const Run r = run_cli(fmt::format("compare '{}' '{}'", kReference, write("regime_and_number.json", doc.dump())));
+  check_fails(r);
+  // A wrong regime outranks a number off by 1e-3: the row and the summary name it.
+  CHECK(has(row_of(r.out, "fig8_side_impact"), "mismatch  results.2.regime: reference \"sliding\", other \"full\""));
+  CHECK(has(r.out, "worst failure mismatch at fig8_side_impact: results.2.regime (reference \"sliding\", other \"full\")"));
+  CHECK(!has(r.out, "worst relative error 0.000e+00 at -"));
+  // A number alone: its relative error and field.
+  auto num = reference();
+  num["results"][1]["impulse"]["contact"][0] = num["results"][1]["impulse"]["contact"][0].get<double>() * (1 + 1e-3);
+  const Run n = run_cli(fmt::format("compare '{}' '{}'", kReference, write("number.json", num.dump())));
+  check_fails(n);
+  CHECK(has(n.out, "worst failure 1.000e-03 at fig8_side_impact: results.1.impulse.contact.0"));
 }
 
 TEST_CASE("with --subset only what is given is compared, and the summary says so", "[compare]") {

@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <system_error>
 #include <unordered_map>
@@ -23,6 +24,8 @@
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/json_literals.hpp"
 #include "impact3d/io/limits.hpp"
+
+#include "compare_diagnosis.hpp"
 
 namespace impact3d::verification {
 namespace {
@@ -61,11 +64,19 @@ struct RefCase {
 };
 
 struct Field {
+  Field(std::string path_, bool pass_, double rel_ = 0, std::string detail_ = "", bool compared_ = false)
+      : path(std::move(path_)), pass(pass_), rel(rel_), detail(std::move(detail_)), compared(compared_) {}
   std::string path;
   bool pass;
   double rel = 0;
   std::string detail;
   bool compared = false;  // the other side gave a value (not a missing field or a whole-case failure)
+  std::string leaf;       // the reference leaf compared: below its result, or from the top
+  int result = -1;        // that result's index; -1 from the top
+  std::optional<double> reference, other;  // both numbers, where both were numbers
+  double rtol = 0, atol = 0;               // the tolerance the number was held to
+  double excess = 0;                       // |other - reference| / (atol + rtol |reference|); above 1 fails
+  double abs_error = 0;
 };
 
 struct CaseReport {
@@ -156,7 +167,7 @@ RefCase load_reference(const std::string& name, const std::string& file) {
   if (!doc.is_object() || results == doc.end())
     throw CaseError(file + ": $.results", "missing (a reference result is an object with a \"results\" array)");
   if (!results->is_array()) throw CaseError(file + ": $.results", "not an array");
-  RefCase rc{name, file, {}, {}, 0};
+  RefCase rc{name, file, {}, {}, 0, 0, {}};
   for (const auto& path : kContractTop) {
     auto parts = split_dots(path);
     if (const json* v = find(doc, parts)) collect(*v, std::move(parts), true, rc.top);
@@ -211,8 +222,51 @@ class Comparer {
 
   bool required(const Leaf& l) const { return !o_.subset && (l.contract || o_.all_fields); }
 
-  Field missing(const std::string& path) const { return {path, false, 0, "missing"}; }
+  bool subset() const { return o_.subset; }
 
+  Field missing(const std::string& path, const char* what = "missing") const { return {path, false, 0, what}; }
+
+  // `result`: the index of the reference result the leaf belongs to, -1 for a leaf from the top.
+  Field from_json(const std::string& path, const Leaf& l, int result, const json& other) const {
+    Field f = [&] {
+      if (l.value.is_number()) {
+        if (!other.is_number()) return mismatch(path, l, describe(other), ": not a number");
+        const double b = other.get<double>();
+        if (!std::isfinite(b)) return mismatch(path, l, describe(other), ": not a finite number");
+        return number(path, l, b);
+      }
+      return Field{path, other == l.value, 0, other == l.value ? "" : mismatch(path, l, describe(other), "").detail, true};
+    }();
+    f.leaf = l.dotted;
+    f.result = result;
+    return f;
+  }
+
+  Field from_cell(const std::string& path, const Leaf& l, int result, std::string_view cell) const {
+    Field f = [&] {
+      if (l.value.is_number()) {
+        const std::string text(cell);  // at most kCellChars
+        char* end = nullptr;
+        const double b = std::strtod(text.c_str(), &end);
+        if (end == text.c_str() || *end != '\0') return mismatch(path, l, excerpt(cell), ": not a number");
+        if (!std::isfinite(b)) return mismatch(path, l, excerpt(cell), ": not a finite number");
+        return number(path, l, b);
+      }
+      const std::string want = l.value.is_string() ? l.value.get<std::string>() : l.value.dump();
+      return Field{path, cell == want, 0, cell == want ? "" : mismatch(path, l, excerpt(cell), "").detail, true};
+    }();
+    f.leaf = l.dotted;
+    f.result = result;
+    return f;
+  }
+
+  // A result file: every reference leaf looked up in it; shape errors in `other` are failing fields.
+  // With --rtol-from-bound, at the tolerance the file's own rounding bound gives the case.
+  CaseReport compare_json(const RefCase& rc, const json& other, const std::string& file) const {
+    return compare_json_at(rc, other, file);
+  }
+
+ private:
   Field number(const std::string& path, const Leaf& l, double b) const {
     const double a = l.value.get<double>();
     double d = std::fabs(b - a);
@@ -220,39 +274,22 @@ class Comparer {
     if (!l.parts.empty() && ends_with(l.parts.back(), "_deg")) d = std::fabs(std::remainder(b - a, 360.0));
     // A relative error is reported only where the value stands above the absolute tolerance.
     const double rel = std::fabs(a) > tol_.atol ? d / std::fabs(a) : 0;
-    return {path, d <= tol_.atol + tol_.rtol * std::fabs(a), rel, fmt::format("reference {:.17g}, other {:.17g}", a, b), true};
+    const double allowed = tol_.atol + tol_.rtol * std::fabs(a);
+    Field f{path, d <= allowed, rel, fmt::format("reference {:.17g}, other {:.17g}", a, b), true};
+    f.reference = a;
+    f.other = b;
+    f.rtol = tol_.rtol;
+    f.atol = tol_.atol;
+    f.excess = allowed > 0 ? d / allowed : (d > 0 ? INFINITY : 0);
+    f.abs_error = d;
+    return f;
   }
 
   Field mismatch(const std::string& path, const Leaf& l, const std::string& other, const char* why) const {
     return {path, false, 0, fmt::format("reference {}, other {}{}", describe(l.value), other, why), true};
   }
 
-  Field from_json(const std::string& path, const Leaf& l, const json& other) const {
-    if (l.value.is_number()) {
-      if (!other.is_number()) return mismatch(path, l, describe(other), ": not a number");
-      const double b = other.get<double>();
-      if (!std::isfinite(b)) return mismatch(path, l, describe(other), ": not a finite number");
-      return number(path, l, b);
-    }
-    return {path, other == l.value, 0, other == l.value ? "" : mismatch(path, l, describe(other), "").detail, true};
-  }
-
-  Field from_cell(const std::string& path, const Leaf& l, std::string_view cell) const {
-    if (l.value.is_number()) {
-      const std::string text(cell);  // at most kCellChars
-      char* end = nullptr;
-      const double b = std::strtod(text.c_str(), &end);
-      if (end == text.c_str() || *end != '\0') return mismatch(path, l, excerpt(cell), ": not a number");
-      if (!std::isfinite(b)) return mismatch(path, l, excerpt(cell), ": not a finite number");
-      return number(path, l, b);
-    }
-    const std::string want = l.value.is_string() ? l.value.get<std::string>() : l.value.dump();
-    return {path, cell == want, 0, cell == want ? "" : mismatch(path, l, excerpt(cell), "").detail, true};
-  }
-
-  // A result file: every reference leaf looked up in it; shape errors in `other` are failing fields.
-  // With --rtol-from-bound, at the tolerance the file's own rounding bound gives the case.
-  CaseReport compare_json(const RefCase& rc, const json& other, const std::string& file) const {
+  CaseReport compare_json_at(const RefCase& rc, const json& other, const std::string& file) const {
     if (!other.is_object()) throw CaseError(file + ": $", "not an object (a result file is the contract's result JSON)");
     if (!o_.rtol_from_bound) return compare_fields(rc, other);
     std::string why;
@@ -265,7 +302,6 @@ class Comparer {
     return r;
   }
 
- private:
   // --rtol-from-bound: the largest rounding_bound of the other side's results of this case (impact3d
   // writes one per result: the relative bound of its precision, rounding.hpp); every result compared
   // must give a finite one. Empty, with the reason, when one does not.
@@ -318,10 +354,10 @@ class Comparer {
   }
 
   CaseReport compare_fields(const RefCase& rc, const json& other) const {
-    CaseReport r{rc.name, {}};
+    CaseReport r{rc.name, {}, false, std::nullopt};
     for (const auto& l : rc.top) {
       if (l.value.is_null()) continue;
-      if (const json* v = find(other, l.parts)) r.fields.push_back(from_json(l.dotted, l, *v));
+      if (const json* v = find(other, l.parts)) r.fields.push_back(from_json(l.dotted, l, -1, *v));
       else if (required(l)) r.fields.push_back(missing(l.dotted));
     }
     const auto results = other.find("results");
@@ -350,7 +386,7 @@ class Comparer {
         if (const json* v = find(o, l.parts)) {
           Comparer at = *this;
           if (o_.rtol_from_bound) at.tol_.atol = angle_atol(rc.numbers[i], l);
-          r.fields.push_back(at.from_json(base + "." + l.dotted, l, *v));
+          r.fields.push_back(at.from_json(base + "." + l.dotted, l, static_cast<int>(i), *v));
         } else if (required(l)) {
           r.fields.push_back(missing(base + "." + l.dotted));
         }
@@ -371,6 +407,12 @@ struct CsvCase {
   bool any = false;
   std::vector<std::optional<Field>> top;          // by top leaf: the failing or else the first value given
   std::map<std::size_t, std::vector<Field>> results;
+};
+
+// A CSV compares the fields it has columns for, no others.
+struct CsvFile {
+  std::vector<CsvCase> cases;
+  std::unordered_set<std::string> columns;
 };
 
 std::string_view trim(std::string_view s) {
@@ -401,7 +443,7 @@ std::optional<std::size_t> result_index(std::string_view s, std::size_t n) {
 
 // Each row stays a flat map from the header's dotted paths to its cells; the reference's leaves are
 // looked up in it. No document is built from a column's path, so no path can size an allocation.
-std::vector<CsvCase> read_csv(const std::string& file, const std::vector<RefCase>& refs, const Comparer& cmp) {
+CsvFile read_csv(const std::string& file, const std::vector<RefCase>& refs, const Comparer& cmp) {
   const std::string text = io::read_text_file(file, io::limits::kResultFileBytes);
   std::string_view rest = text;
   if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);  // a spreadsheet's byte-order mark
@@ -443,7 +485,10 @@ std::vector<CsvCase> read_csv(const std::string& file, const std::vector<RefCase
 
   std::unordered_map<std::string, std::size_t> case_of;
   for (std::size_t k = 0; k < refs.size(); ++k) case_of.emplace(refs[k].name, k);
-  std::vector<CsvCase> out(refs.size());
+  CsvFile csv;
+  csv.columns.insert(header.begin() + 2, header.end());
+  std::vector<CsvCase>& out = csv.cases;
+  out.resize(refs.size());
   for (std::size_t k = 0; k < refs.size(); ++k) out[k].top.resize(refs[k].top.size());
   std::map<std::pair<std::size_t, std::size_t>, int> first_row;
   std::vector<char> used(header.size());
@@ -477,7 +522,8 @@ std::vector<CsvCase> read_csv(const std::string& file, const std::vector<RefCase
     cc.any = true;
     std::fill(used.begin(), used.end(), 0);
     used[0] = used[1] = 1;
-    // The cell of a leaf, marking its column as one this row may fill; empty means not given.
+    // The cell of a leaf, marking its column as one this row may fill; empty means not given. A leaf
+    // with no column is not compared.
     const auto cell_of = [&](const Leaf& l) -> std::optional<std::string_view> {
       const auto c = column.find(l.dotted);
       if (c == column.end()) return std::nullopt;
@@ -489,7 +535,7 @@ std::vector<CsvCase> read_csv(const std::string& file, const std::vector<RefCase
       const Leaf& l = rc.top[t];
       const auto cell = cell_of(l);
       if (!cell || l.value.is_null()) continue;
-      Field f = cmp.from_cell(l.dotted, l, *cell);
+      Field f = cmp.from_cell(l.dotted, l, -1, *cell);
       if (!f.pass) f.detail += fmt::format(" (row {})", row);
       if (!cc.top[t] || (cc.top[t]->pass && !f.pass)) cc.top[t] = std::move(f);
     }
@@ -498,19 +544,154 @@ std::vector<CsvCase> read_csv(const std::string& file, const std::vector<RefCase
     for (const Leaf& l : rc.results[*i]) {
       const auto cell = cell_of(l);
       if (l.value.is_null()) continue;
-      if (cell) fields.push_back(cmp.from_cell(base + l.dotted, l, *cell));
-      else if (cmp.required(l)) fields.push_back(cmp.missing(base + l.dotted));
+      if (cell) fields.push_back(cmp.from_cell(base + l.dotted, l, static_cast<int>(*i), *cell));
+      else if (!cmp.subset() && column.count(l.dotted))
+        fields.push_back(cmp.missing(base + l.dotted, "missing (an empty cell in a column of the CSV)"));
     }
     for (std::size_t c = 2; c < cells.size(); ++c)
       if (!used[c] && !cells[c].empty())
         throw CaseError(file, fmt::format("{}: result {} of {} has no such field in the reference (leave the cell empty)",
                                           where(c), *i, io::quoted(rc.name)));
   }
-  return out;
+  return csv;
 }
 
 // A failure of the whole case, listed like a field: "case missing", "nothing compared".
 Field whole_case(const std::string& what, const std::string& detail) { return {what, false, 0, detail}; }
+
+// The error of a field as the table shows it: a number's relative error (its absolute one near zero), or
+// what kind of failure it is.
+std::string error_text(const Field& f) {
+  if (f.reference && f.other) {
+    if (f.rel > 0) return fmt::format("{:.3e}", f.rel);
+    return fmt::format("abs {:.2e}", f.abs_error);
+  }
+  return f.compared ? "mismatch" : "missing";
+}
+
+// Which of two failures is worse: one that is not a number comparison (a wrong regime, a missing field)
+// before any number, then the number furthest outside its tolerance.
+bool worse(const Field& a, const Field& b) {
+  const bool an = a.reference.has_value(), bn = b.reference.has_value();
+  if (an != bn) return !an;
+  return a.excess > b.excess;
+}
+
+int report(const std::vector<RefCase>& refs, std::vector<std::optional<CaseReport>>& reports, const CompareOptions& o,
+           const std::string& other, const std::optional<std::unordered_set<std::string>>& csv_columns) {
+  std::size_t reference_fields = 0, compared = 0, cases = 0, failed_cases = 0, results_total = 0, results_given = 0,
+              cases_given = 0;
+  double worst = 0;
+  std::string worst_where = "-";
+  std::optional<Field> worst_failure;
+  std::string worst_failure_case;
+  std::map<std::string, std::size_t> compared_by_leaf;
+  std::vector<detail::NumericFailure> numeric_failures;
+  // Every line passes through printable(): case names, paths and values come from other people's files.
+  const auto line = [](const std::string& s) { return io::printable(s) + "\n"; };
+  // With --rtol-from-bound each case's rtol is a column of its own.
+  const auto row = [&](const std::string& name, const std::string& fields, const std::string& failed, const std::string& rtol,
+                       const std::string& err, const std::string& field) {
+    if (!o.rtol_from_bound) return line(fmt::format("{:<40} {:>7} {:>7}  {:>12}  {}", name, fields, failed, err, field));
+    return line(fmt::format("{:<40} {:>7} {:>7}  {:>9}  {:>12}  {}", name, fields, failed, rtol, err, field));
+  };
+  std::string table = row("case", "fields", "failed", "rtol", "worst error", "worst field");
+  std::string failures;
+  std::optional<double> rtol_lo, rtol_hi;
+  for (std::size_t k = 0; k < refs.size(); ++k) {
+    reference_fields += refs[k].fields;
+    results_total += refs[k].results.size();
+    if (!reports[k]) continue;
+    CaseReport& r = *reports[k];
+    ++cases;
+    const auto n = static_cast<std::size_t>(std::count_if(r.fields.begin(), r.fields.end(), [](const Field& f) { return f.compared; }));
+    compared += n;
+    const bool whole = r.whole || (!r.fields.empty() && !r.fields.front().compared && r.fields.front().path == "case missing");
+    if (n == 0 && !whole) r.fields.insert(r.fields.begin(), whole_case("nothing compared", "no field of the reference in the other results"));
+    int failed = 0;
+    const Field* named = nullptr;    // the worst failure
+    const Field* largest = nullptr;  // the largest relative error compared
+    std::set<int> given;
+    for (const auto& f : r.fields) {
+      if (f.compared) {
+        ++compared_by_leaf[f.leaf];
+        if (f.result >= 0) given.insert(f.result);
+      }
+      if (!f.pass) {
+        ++failed;
+        failures += line(fmt::format("  FAIL {}: {}: {}", r.name, f.path, f.detail));
+        if (!named || worse(f, *named)) named = &f;
+        if (f.reference && f.other && f.pass == false)
+          numeric_failures.push_back({f.leaf, *f.reference, *f.other, f.rtol, f.atol,
+                                      f.result >= 0 ? &refs[k].numbers[static_cast<std::size_t>(f.result)] : nullptr});
+      }
+      if (f.compared && (!largest || f.rel > largest->rel)) largest = &f;
+      if (f.compared && f.rel > worst) {
+        worst = f.rel;
+        worst_where = r.name + ": " + f.path;
+      }
+    }
+    results_given += given.size();
+    cases_given += n > 0 ? 1 : 0;
+    if (failed) ++failed_cases;
+    std::string err = fmt::format("{:.3e}", largest ? largest->rel : 0.0), field = largest && largest->rel > 0 ? largest->path : "-";
+    if (named) {
+      err = error_text(*named);
+      field = named->reference ? named->path : named->path + ": " + named->detail;
+      if (!worst_failure || worse(*named, *worst_failure)) {
+        worst_failure = *named;
+        worst_failure_case = r.name;
+      }
+    }
+    if (r.rtol) {
+      rtol_lo = std::min(rtol_lo.value_or(*r.rtol), *r.rtol);
+      rtol_hi = std::max(rtol_hi.value_or(*r.rtol), *r.rtol);
+    }
+    table += row(r.name, std::to_string(n), std::to_string(failed), r.rtol ? fmt::format("{:.2e}", *r.rtol) : "-", err, field);
+  }
+  std::string out = table;
+  if (!failures.empty()) out.append("\n").append(failures);
+  const auto diagnoses = detail::diagnose(numeric_failures);
+  if (!diagnoses.empty()) out.append("\n");
+  for (const auto& d : diagnoses) out.append(line(d));
+  if (compared == 0) out.append("\n").append(line(fmt::format("nothing was compared: {} gives no field of the reference", other)));
+
+  // What was compared: a CSV's columns with their counts; for result files the number of fields.
+  std::string fields = fmt::format("fields compared: {} values", compared);
+  if (csv_columns) {
+    std::vector<std::string> names(csv_columns->begin(), csv_columns->end());
+    std::sort(names.begin(), names.end());
+    constexpr std::size_t kListed = 24;
+    fields += fmt::format(" in the CSV's {} column{} (only these; the reference has {} values):", names.size(),
+                          names.size() == 1 ? "" : "s", reference_fields);
+    for (std::size_t i = 0; i < names.size() && i < kListed; ++i) {
+      const auto it = compared_by_leaf.find(names[i]);
+      fields += fmt::format(" {} x{}", names[i], it == compared_by_leaf.end() ? 0 : it->second);
+    }
+    if (names.size() > kListed) fields += fmt::format(" and {} more", names.size() - kListed);
+  } else {
+    fields += fmt::format(" of {} distinct fields (the reference has {} values)", compared_by_leaf.size(), reference_fields);
+  }
+  out.append("\n").append(line(fields));
+  out.append(line(fmt::format("coverage: {} of {} reference cases, {} of {} results given{}", cases_given, refs.size(), results_given,
+                              results_total, o.subset ? " (--subset: the others are not compared)" : "")));
+
+  const std::string tolerance =
+      !o.rtol_from_bound ? fmt::format("rtol {:g}, atol {:g}", o.rtol, o.atol)
+      : rtol_lo          ? fmt::format("rtol from each case's rounding_bound, {:.2e} to {:.2e}; atol rtol x its largest magnitude",
+                                       *rtol_lo, *rtol_hi)
+                         : std::string("rtol from each case's rounding_bound");
+  std::string summary = fmt::format("{} of {} cases pass ({}); ", cases - failed_cases, cases, tolerance);
+  if (worst_failure)
+    summary += fmt::format("worst failure {} at {}: {}{}", error_text(*worst_failure), worst_failure_case, worst_failure->path,
+                           worst_failure->reference ? "" : " (" + worst_failure->detail + ")");
+  else
+    summary += fmt::format("worst relative error {:.3e} at {}", worst, worst_where);
+  if (o.subset) summary += fmt::format("; subset: {} of {} reference fields compared", compared, reference_fields);
+  out.append(line(summary));
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  return failed_cases || compared == 0 ? 1 : 0;
+}
 
 }  // namespace
 
@@ -532,25 +713,29 @@ int compare(const std::string& reference, const std::string& other, const Compar
   }
 
   const Comparer cmp(o);
+  std::optional<std::unordered_set<std::string>> csv_columns;  // a CSV: the fields it compares
   // By reference case; empty where --subset leaves out a case the other side does not have.
   std::vector<std::optional<CaseReport>> reports(refs.size());
   const auto absent = [&](std::size_t k, const std::string& detail) {
-    if (!o.subset) reports[k] = CaseReport{refs[k].name, {whole_case("case missing", detail)}};
+    if (!o.subset) reports[k] = CaseReport{refs[k].name, {whole_case("case missing", detail)}, true, std::nullopt};
   };
   if (fs::path(other).extension() == ".csv") {
     if (o.rtol_from_bound)
       throw CaseError(other, "--rtol-from-bound takes each case's tolerance from its result JSON's rounding_bound; a CSV has none");
-    const auto csv = read_csv(other, refs, cmp);
+    const CsvFile file = read_csv(other, refs, cmp);
+    csv_columns = file.columns;
+    const auto& csv = file.cases;
     for (std::size_t k = 0; k < refs.size(); ++k) {
       const RefCase& rc = refs[k];
       if (!csv[k].any) {
         absent(k, "no row in " + other);
         continue;
       }
-      CaseReport r{rc.name, {}};
+      CaseReport r{rc.name, {}, false, std::nullopt};
       for (std::size_t t = 0; t < rc.top.size(); ++t) {
         if (csv[k].top[t]) r.fields.push_back(*csv[k].top[t]);
-        else if (!rc.top[t].value.is_null() && cmp.required(rc.top[t])) r.fields.push_back(cmp.missing(rc.top[t].dotted));
+        else if (!rc.top[t].value.is_null() && !o.subset && file.columns.count(rc.top[t].dotted))
+          r.fields.push_back(cmp.missing(rc.top[t].dotted, "missing (no row gives this column)"));
       }
       for (std::size_t i = 0; i < rc.results.size(); ++i) {
         const auto it = csv[k].results.find(i);
@@ -581,71 +766,7 @@ int compare(const std::string& reference, const std::string& other, const Compar
     }
   }
 
-  std::size_t reference_fields = 0, compared = 0, cases = 0, failed_cases = 0;
-  double worst = 0;
-  std::string worst_where = "-";
-  // Every line passes through printable(): case names, paths and values come from other people's files.
-  const auto line = [](const std::string& s) { return io::printable(s) + "\n"; };
-  // With --rtol-from-bound each case's rtol is a column of its own.
-  const auto row = [&](const std::string& name, const std::string& fields, const std::string& failed, const std::string& rtol,
-                       const std::string& rel, const std::string& field) {
-    if (!o.rtol_from_bound) return line(fmt::format("{:<40} {:>7} {:>7}  {:>12}  {}", name, fields, failed, rel, field));
-    return line(fmt::format("{:<40} {:>7} {:>7}  {:>9}  {:>12}  {}", name, fields, failed, rtol, rel, field));
-  };
-  std::string table = row("case", "fields", "failed", "rtol", "worst rel", "worst field");
-  std::string failures;
-  std::optional<double> rtol_lo, rtol_hi;
-  for (std::size_t k = 0; k < refs.size(); ++k) {
-    reference_fields += refs[k].fields;
-    if (!reports[k]) continue;
-    CaseReport& r = *reports[k];
-    ++cases;
-    const auto n = static_cast<std::size_t>(std::count_if(r.fields.begin(), r.fields.end(), [](const Field& f) { return f.compared; }));
-    compared += n;
-    const bool whole = r.whole || (!r.fields.empty() && !r.fields.front().compared && r.fields.front().path == "case missing");
-    if (n == 0 && !whole) r.fields.insert(r.fields.begin(), whole_case("nothing compared", "no field of the reference in the other results"));
-    int failed = 0;
-    const Field* named = nullptr;  // the failure with the largest relative error, else the first failure
-    const Field* largest = nullptr;
-    for (const auto& f : r.fields) {
-      if (!f.pass) {
-        ++failed;
-        failures += line(fmt::format("  FAIL {}: {}: {}", r.name, f.path, f.detail));
-        if (!named || (f.rel > named->rel)) named = &f;
-      }
-      if (f.compared && (!largest || f.rel > largest->rel)) largest = &f;
-      if (f.compared && f.rel > worst) {
-        worst = f.rel;
-        worst_where = r.name + ": " + f.path;
-      }
-    }
-    if (failed) ++failed_cases;
-    // A failure with no relative error (a string, a missing field, a value near zero) shows its detail.
-    std::string rel = fmt::format("{:.3e}", largest ? largest->rel : 0.0), field = largest && largest->rel > 0 ? largest->path : "-";
-    if (named) {
-      rel = named->rel > 0 ? fmt::format("{:.3e}", named->rel) : "-";
-      field = named->rel > 0 ? named->path : named->path + ": " + named->detail;
-    }
-    if (r.rtol) {
-      rtol_lo = std::min(rtol_lo.value_or(*r.rtol), *r.rtol);
-      rtol_hi = std::max(rtol_hi.value_or(*r.rtol), *r.rtol);
-    }
-    table += row(r.name, std::to_string(n), std::to_string(failed), r.rtol ? fmt::format("{:.2e}", *r.rtol) : "-", rel, field);
-  }
-  std::string out = table;
-  if (!failures.empty()) out.append("\n").append(failures);
-  if (compared == 0) out.append("\n").append(line(fmt::format("nothing was compared: {} gives no field of the reference", other)));
-  const std::string tolerance =
-      !o.rtol_from_bound ? fmt::format("rtol {:g}, atol {:g}", o.rtol, o.atol)
-      : rtol_lo          ? fmt::format("rtol from each case's rounding_bound, {:.2e} to {:.2e}; atol rtol x its largest magnitude",
-                                       *rtol_lo, *rtol_hi)
-                         : std::string("rtol from each case's rounding_bound");
-  std::string summary = fmt::format("{} of {} cases pass ({}); worst relative error {:.3e} at {}", cases - failed_cases,
-                                    cases, tolerance, worst, worst_where);
-  if (o.subset) summary += fmt::format("; subset: {} of {} reference fields compared", compared, reference_fields);
-  out.append("\n").append(line(summary));
-  std::fwrite(out.data(), 1, out.size(), stdout);
-  return failed_cases || compared == 0 ? 1 : 0;
+  return report(refs, reports, o, other, csv_columns);
 }
 
 }  // namespace impact3d::verification

@@ -250,9 +250,10 @@ class Reader {
 
   CaseSpec read() const {
     const json& root = parsed_.doc;
-    object(root, "$", {"name", "units", "vehicles", "contact", "restitution", "strategy"});
+    object(root, "$", {"name", "description", "units", "vehicles", "contact", "restitution", "strategy"});
     CaseSpec c;
     if (auto* n = optional(root, "name")) c.name = string(*n, "$.name");
+    if (auto* d = optional(root, "description")) c.description = string(*d, "$.description");
     if (auto* u = optional(root, "units")) {
       const std::string units = string(*u, "$.units");
       if (units == "US") c.units = Units::US;

@@ -71,6 +71,7 @@ struct StrategySpec {
 
 struct CaseSpec {
   std::string name;
+  std::string description;  // what the case exercises, one line (optional; echoed in the result)
   Units units = Units::SI;
   std::array<VehicleSpec, 2> vehicles;
   ContactSpec contact;

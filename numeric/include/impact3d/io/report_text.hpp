@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "impact3d/io/escape.hpp"
 #include "impact3d/io/present.hpp"
 #include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/numeric/analysis.hpp"
@@ -55,9 +56,12 @@ std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   const auto& f = p.f;
   const auto U = [&](const char* q) { return std::string(" [") + unit_label(c.units, q) + "]"; };
   const char* axis[3] = {"n", "t", "z"};
+  // Names and descriptions are the case author's text: escaped, so that no control character reaches a
+  // terminal.
   std::string out = fmt::format("impact3d: {} (units {}, precision {}, {} engine)\n",
-                                c.name.empty() ? "unnamed case" : c.name, units_name(c.units), precision,
+                                c.name.empty() ? "unnamed case" : io::printable(c.name), units_name(c.units), precision,
                                 engine_name(a.engine));
+  if (!c.description.empty()) out += io::printable(c.description) + "\n";
 
   Table cs;
   cs.heading("Case (eqs 4-9; impulse space as in Figure 2)");
@@ -121,7 +125,7 @@ std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   each("z sliding (Figure 2)", [&](const auto& s) { return std::string(axis_change_name(s.z_change)); });
   each("impulse-space volume (Figure 2)", [&](const auto& s) { return s.volume; });
   for (int i = 0; i < 2; ++i) {
-    const std::string who = fmt::format("vehicle {} ({})", i + 1, c.vehicles[i].name);
+    const std::string who = fmt::format("vehicle {} ({})", i + 1, io::printable(c.vehicles[i].name));
     for (int k = 0; k < 3; ++k)
       each(fmt::format("{} velocity after {}", who, world[k]) + U("velocity"),
            [&](const auto& s) { return p.num(s.after[i].v_W(k), f.velocity); });

@@ -120,6 +120,7 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   JsonWriter w;
   w.begin_object();
   w.key("name").string(c.name);
+  if (!c.description.empty()) w.key("description").string(c.description);
   w.key("units").string(units_name(c.units));
   w.key("precision").string(precision);
   w.key("engine").string(engine_name(a.engine));
