@@ -299,13 +299,24 @@ TEST_CASE("compare diagnoses an opposite sign convention, exchanged vehicles and
   CHECK(has(neg.out, "diagnosis: "));
   CHECK(has(neg.out, "failing numbers are the reference negated"));
   CHECK(has(neg.out, "the normal n points into vehicle 1"));
-  // Vehicles numbered the other way.
+  // Vehicles numbered the other way: their fields exchanged, the impulse on vehicle 1 and the relative
+  // velocity negated.
   const Run swapped = run_cli(fmt::format("compare '{}' '{}'", kReference,
-                                          altered({"vehicles"}, [](nlohmann::json& r, const std::string& k) {
-                                            std::swap(r[k][0], r[k][1]);
-                                          })));
+                                          altered({"vehicles", "impulse", "relative_velocity"},
+                                                  [](nlohmann::json& r, const std::string& k) {
+                                                    if (k == "vehicles") std::swap(r[k][0], r[k][1]);
+                                                    else scale_numbers(r[k], -1);
+                                                  })));
   check_fails(swapped);
-  CHECK(has(swapped.out, "failing numbers are the other vehicle's reference values"));
+  CHECK(has(swapped.out, "failing numbers are what numbering the vehicles the other way gives"));
+  // Another tool prints 6 significant digits: its negated numbers fail at rtol 1e-9 and are still seen
+  // as negated.
+  const Run six = run_cli(fmt::format("compare '{}' '{}'", kReference,
+                                      altered({"impulse", "relative_velocity"}, [](nlohmann::json& r, const std::string& k) {
+                                        scale_numbers(r[k], -(1 + 2e-7));
+                                      })));
+  check_fails(six);
+  CHECK(has(six.out, "failing numbers are the reference negated"));
   // Velocities written in mph against an SI reference: x 1/0.44704.
   const Run mph = run_cli(fmt::format("compare '{}' '{}'", kReference,
                                       altered({"relative_velocity"}, [](nlohmann::json& r, const std::string& k) {
@@ -404,4 +415,39 @@ TEST_CASE("CSV rows: duplicates and ragged rows are errors, a non-finite number 
   check_fails(r);
   CHECK(has(r.out, "results.0.energy.loss: reference "));
   CHECK(has(r.out, ", other \"inf\": not a finite number"));
+}
+
+TEST_CASE("a value where the reference has none fails; a NUL inside a cell is not a number", "[compare]") {
+  // Result 3 of fig8 is Brach with both ratios critical (eq 27): no sliding after, so the reference's swerve
+  // angle is null (undefined). A tool that prints an angle there has sliding where there is none.
+  const auto doc = reference();
+  REQUIRE(doc["results"][3]["sliding"]["swerve_angle_deg"].is_null());
+  auto other = doc;
+  other["results"][3]["sliding"]["swerve_angle_deg"] = 12.5;
+  const Run r = run_cli(fmt::format("compare '{}' '{}'", kReference, write("angle.json", other.dump())));
+  check_fails(r);
+  CHECK(has(r.out, "FAIL fig8_side_impact: results.3.sliding.swerve_angle_deg: reference null (undefined here), other 12.5"));
+  // In a CSV, an empty cell or "null" agrees with a null, a number does not.
+  for (const std::string cell : {"", "null"})
+    CHECK(run_cli(fmt::format("compare '{}' '{}' --subset", kReference,
+                              write("null.csv", "case,result,sliding.swerve_angle_deg,regime\nfig8_side_impact,3," + cell +
+                                                    "," + doc["results"][3]["regime"].get<std::string>() + "\n")))
+              .status == 0);
+  const Run c = run_cli(fmt::format("compare '{}' '{}' --subset", kReference,
+                                    write("angle.csv", "case,result,sliding.swerve_angle_deg\nfig8_side_impact,3,12.5\n")));
+  check_fails(c);
+  CHECK(has(c.out, "results.3.sliding.swerve_angle_deg: reference null (undefined here), other \"12.5\""));
+  // "1\0junk": strtod would stop at the NUL and read 1.
+  const double loss = doc["results"][0]["energy"]["loss"].get<double>();
+  std::string nul = fmt::format("case,result,energy.loss\nfig8_side_impact,0,{:.17g}", loss);
+  nul += std::string(1, '\0') + "junk\n";
+  const Run n = run_cli(fmt::format("compare '{}' '{}' --subset", kReference, write("nul.csv", nul)));
+  check_fails(n);
+  CHECK(has(n.out, ": not a number"));
+}
+
+TEST_CASE("a CSV with the option --all is refused: --all asks for every field of a result file", "[compare]") {
+  check_one_error(run_cli(fmt::format("compare '{}' '{}' --all", kReference,
+                                      write("all.csv", "case,result,regime\nfig8_side_impact,0,full\n"))),
+                  "all.csv: --all requires every field of a result file");
 }

@@ -179,7 +179,7 @@ void solution_plane_view(Context& c, std::size_t k) {
   const double s = c.f.impulse;
   const Point sol{label(c.spec.strategies[k]), f.P_u / s, f.P_n / s};
   const double cir = f.cir, gir = f.gir;
-  const double ymax = 1.6 * std::max(sol.y, p.m_prime * (1 + p.restitution) * p.V_ri.x() / p.K(0, 0) / s);
+  const double ymax = 1.6 * std::max(sol.y, c.fig.contact.restitution_rhs / p.K(0, 0) / s);
   const double xs[] = {sol.x, gir * ymax, cir * ymax, 0.0};
   double xmin = 0, xmax = 0;
   for (double x : xs) xmin = std::min(xmin, x), xmax = std::max(xmax, x);

@@ -241,6 +241,9 @@ std::string status_of(const AuditEntry& e) {
         }
       }
       if (used != 1) fail("exactly one reading must be the implementation's");
+      bool another_differs = false;
+      for (const auto& r : e.readings) another_differs = another_differs || (!r.used_by_implementation && !all_equal(r.checks));
+      if (!another_differs) fail("no other reading differs from the derivation: nothing is ambiguous");
       return "ambiguous";
     }
     case EntryKind::claim:

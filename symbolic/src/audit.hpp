@@ -45,6 +45,7 @@ class Check {
 // How a printed item may be read, and what comparing it under that reading gives.
 struct Reading {
   std::string description;
+  std::string latex;  // the reading as a formula
   bool used_by_implementation = false;
   std::vector<Check> checks;
 };

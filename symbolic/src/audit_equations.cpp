@@ -66,7 +66,7 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     for (int b = 0; b < 2; ++b) {
       const std::string line = "line " + std::to_string(b + 1) + " (vehicle " + std::to_string(b + 1) + ")";
       append(checks, Auditor::compare_each(line + ", middle expression dV_i + dw_i x r", kBodyAxes,
-                                           paper::eq4_middle(d, b), d.dV_ic[b]));
+                                           paper::eq4_middle(d, b, 0), d.dV_ic[b]));
       append(checks, Auditor::compare_each(line + ", right-hand expression P_i/m_i + [J_i^-1 (r_i x P_i)] x r_i",
                                            kBodyAxes, paper::eq4_right(d, b), d.dV_ic[b]));
     }
@@ -78,7 +78,7 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     e.printed_latex = "\\vec{V}_{IC2f} - \\vec{V}_{IC2i} = \\Delta\\vec{V}_2 + \\Delta\\vec{\\omega}_2 \\times \\vec{r}_1";
     e.corrected_latex = "\\vec{V}_{IC2f} - \\vec{V}_{IC2i} = \\Delta\\vec{V}_2 + \\Delta\\vec{\\omega}_2 \\times \\vec{r}_2";
     e.corrections = Auditor::compare_each("line 2, middle expression dV_2 + dw_2 x r_2", kBodyAxes,
-                                          paper::eq4_right(d, 1), d.dV_ic[1]);
+                                          paper::eq4_middle(d, 1, 1), d.dV_ic[1]);
     out.push_back(std::move(e));
   }
   {
@@ -116,37 +116,27 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
   }
   out.push_back(definition("eq13", "Definition of the contact-plane resultant P_CP."));
   {
-    // The Full Impact at eps = 0 satisfies the three constraints of eq 20 on the plane at phi_FI, which have
-    // one solution: so eq 20 there is u.P / P_n = sqrt(P_t^2 + P_z^2) / P_n, the ratio printed in eq 14.
+    // eq 14's ratio sqrt(P_tFI^2 + P_zFI^2) / P_nFI against the GIR of eq 20 on the plane at phi_FI, i.e. with
+    // (cos phi, sin phi) = (P_tFI, P_zFI) / rho, rho = sqrt(P_tFI^2 + P_zFI^2). Both sides are rho times a
+    // rational function of the coefficients, so rho cancels from their quotient: the comparison is exact.
     const ex rho = sym("rho");
     const exmap at_fi{{sym("eps"), 0}};
     const ex Pn0 = c.full_impact(0, 0).subs(at_fi), Pt0 = c.full_impact(1, 0).subs(at_fi), Pz0 = c.full_impact(2, 0).subs(at_fi);
-    const ex cf = Pt0 / rho, sf = Pz0 / rho;
-    const matrix KP = c.K.mul(column(Pn0, Pt0, Pz0));
+    const ex gir = c.plane_critical.subs(plane_symbols_in_contact_terms(c)).subs(exmap{{sym("eps"), 0}});
+    const ex gir_on_fi_plane = gir.subs(exmap{{cp, Pt0 / rho}, {sp, Pz0 / rho}});
+    const ex printed14 = rho / Pn0;
     out.push_back(formula(
         "eq14",
-        "eq 14's ratio is eq 20 on the phi_FI plane: the Full Impact at eps = 0 satisfies the three constraints that "
-        "define eq 20 there (rho = sqrt(P_tFI^2 + P_zFI^2)), which have one solution. eps cancels from eq 14 since P_FI "
-        "is proportional to (1 + eps).",
-        {Auditor::compare("no restitution (n): m' V_rni - (K P_FI)_n", KP(0, 0), mp * sym("Vn")),
-         Auditor::compare("no sliding along u: u . (K P_FI - m' V_ri)", cf * KP(1, 0) + sf * KP(2, 0),
-                          mp * (cf * sym("Vt") + sf * sym("Vz"))),
-         Auditor::compare("no impulse across the plane: w . P_FI", -sf * Pt0 + cf * Pz0, 0)}));
+        "eq 14's ratio sqrt(P_tFI^2 + P_zFI^2) / P_nFI against eq 20, the GIR, on the plane at phi_FI (eq 15); eps "
+        "cancels from eq 14 since P_FI is proportional to (1 + eps), so it is compared at eps = 0.",
+        {Auditor::compare("eq 14's ratio against eq 20 at phi_FI, both divided by rho = sqrt(P_tFI^2 + P_zFI^2)",
+                          printed14 / rho, normal(gir_on_fi_plane / rho))}));
   }
   out.push_back(definition("eq15", "Definition of phi_FI. Printed with tan^-1(P_z/P_t); the implementation uses "
                                    "atan2(P_z, P_t) so that the in-plane impulse keeps the Full Impact's sense when "
                                    "P_tFI < 0."));
-  {
-    const matrix& P = c.plane_P_contact;
-    const ex uP = cp * P(1, 0) + sp * P(2, 0), wP = -sp * P(1, 0) + cp * P(2, 0);
-    out.push_back(formula(
-        "eq16",
-        "eq 16, P_CP = mu P_n, at the derived Sliding Impact impulse on the plane at phi (u = (0, cos phi, sin phi), "
-        "w = (0, -sin phi, cos phi)): its component along u is mu P_n and it has none along w, so P_CP = "
-        "sqrt(P_t^2 + P_z^2) = u.P.",
-        {Auditor::compare("u . P = mu P_n", uP, mu * P(0, 0), angles),
-         Auditor::compare("w . P = 0", wP, 0, angles)}));
-  }
+  out.push_back(definition("eq16", "The Sliding Impact's constraint P_CP = mu P_n, which with restitution and no impulse "
+                                   "across the plane defines it; its consequence, eq 18, is compared there."));
   {
     // The plane's frame (n, u, w): an impulse in the plane is (Pn, cos phi Pcp, sin phi Pcp) in contact
     // axes, and m' times the velocity change along n, u, w is -Q K P.
@@ -156,14 +146,16 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     const matrix derived_right = ex_to<matrix>(derived.subs(exmap{{sym("Pcp"), mu * Pn}}));
     const std::vector<std::string> rows = {"row 1 (n)", "row 2 (CP: along u)", "row 3 (b: across the plane, the swerve)"};
     const exmap primed = coefficient_symbols(c.plane_K);
-    Reading plane{"a_i, b_i are the coefficients in the plane's frame (n, u, w), a'_i = (Q K Q^T)_{i,n}, "
-                  "b'_i = (Q K Q^T)_{i,u} (\"determined for phi_FI\")",
+    Reading plane{"a_i, b_i are the coefficients in the plane's frame (n, u, w) (\"determined for phi_FI\")",
+                  "a_i \\to (Q K Q^T)_{i1}, \\; b_i \\to (Q K Q^T)_{i2}, \\quad Q = \\begin{bmatrix} 1 & 0 & 0 \\\\ 0 & "
+                  "\\cos\\phi & \\sin\\phi \\\\ 0 & -\\sin\\phi & \\cos\\phi \\end{bmatrix}",
                   true, {}};
     append(plane.checks, Auditor::compare_each("middle form", rows, ex_to<matrix>(paper::eq17_middle().subs(primed)),
                                                derived, angles));
     append(plane.checks, Auditor::compare_each("right form (P_CP = mu P_n)", rows,
                                                ex_to<matrix>(paper::eq17_right().subs(primed)), derived_right, angles));
-    Reading unprimed{"a_i, b_i are eq 9's coefficients in contact axes (the same unprimed letters)", false, {}};
+    Reading unprimed{"a_i, b_i are eq 9's coefficients in contact axes (the same unprimed letters)",
+                     "a_i \\to K_{i1}, \\; b_i \\to K_{i2}", false, {}};
     append(unprimed.checks, Auditor::compare_each("middle form", rows, paper::eq17_middle(), derived, angles));
     AuditEntry e;
     e.id = "eq17";
@@ -177,7 +169,9 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     out.push_back(std::move(e));
   }
   const exmap plane = plane_symbols_in_contact_terms(c);
-  out.push_back(formula("eq18", "eq 18: Sliding Impact P_n on the plane (plane-frame coefficients).",
+  out.push_back(formula("eq18", "eq 18: the Sliding Impact's P_n on a plane at any phi (PC-Crash's phi_FI, Wach's phi), "
+                                "with the plane-frame coefficients, against the constraints solved in the plane frame and in "
+                                "contact axes.",
                         {Auditor::compare("P_n", paper::eq18(), c.plane_Pn.subs(plane), angles),
                          Auditor::compare("P_n, solved in contact axes with the full K", paper::eq18(),
                                           c.plane_P_contact(0, 0), angles)},
@@ -193,18 +187,9 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
                         paper::eq20()));
   out.push_back(definition("eq21", "Definition of Wach's plane angle; the implementation uses atan2(V_rzi, V_rti) so "
                                    "that the plane follows the sliding's sense."));
-  {
-    const matrix& P = c.plane_P_contact;
-    const ex uP = cp * P(1, 0) + sp * P(2, 0), wP = -sp * P(1, 0) + cp * P(2, 0);
-    out.push_back(formula(
-        "eq22",
-        "eq 22, the constraint P_t' = mu P_n, at the derived impulse of Wach's plane (t' = u = (0, cos phi, sin phi)), "
-        "with the other two constraints of the text: P_z' = 0 and Poisson restitution, whose P_n is eq 18 on that plane.",
-        {Auditor::compare("P_t' = u . P = mu P_n", uP, mu * P(0, 0), angles),
-         Auditor::compare("P_z' = w . P = 0", wP, 0, angles),
-         Auditor::compare("P_n = eq 18 on the plane at phi", paper::eq18(), P(0, 0), angles)},
-        sym("Pt'") - mu * Pn));
-  }
+  out.push_back(definition("eq22", "Wach's constraint P_t' = mu P_n along t' = (0, cos phi, sin phi) at eq 21's phi; with "
+                                   "P_z' = 0 and Poisson restitution it defines Wach's impulse, whose P_n is eq 18 on that "
+                                   "plane (compared there for every phi, with the constraints solved in contact axes)."));
   {
     const exmap brach{{sym("Pt"), sym("mut") * Pn}, {sym("Pz"), sym("muz") * Pn}};
     const matrix printed = ex_to<matrix>(paper::eq23().subs(coefficient_symbols(d.K_factored)).subs(exmap{{mp, mp_value}}))
@@ -224,6 +209,8 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     const ex r_plane = (sym("Vt") * cp + sym("Vz") * sp) / sym("Vn");
     const std::string velocity = "r = V_rti / V_rni, the t-axis counterpart of eq 26's r_z = V_rzi / V_rni";
     const std::string on_plane = "r = V_rCPi / V_rni as eq 19 defines it, V_rCPi = V_rti cos phi_FI + V_rzi sin phi_FI";
+    const std::string velocity_latex = "r = V_{rti} / V_{rni}";
+    const std::string on_plane_latex = "r = (V_{rti} \\cos\\phi_{FI} + V_{rzi} \\sin\\phi_{FI}) / V_{rni}";
     AuditEntry e25;
     e25.id = "eq25";
     e25.kind = EntryKind::ambiguous;
@@ -233,8 +220,9 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     e25.printed_latex = "\\mu_{tC} = \\eta_t \\mu_z + \\mu_{tC0}, \\quad \\eta_t = \\frac{r c_1 - (1+\\varepsilon) c_2}"
                         "{(1+\\varepsilon) b_2 - r b_1}, \\quad \\mu_{tC0} = \\frac{r a_1 - (1+\\varepsilon) a_2}"
                         "{(1+\\varepsilon) b_2 - r b_1}";
-    e25.readings = {{velocity, true, {Auditor::compare("mu_tC", paper::eq25(r_velocity), c.brach_mu_t_critical)}},
-                    {on_plane, false, {Auditor::compare("mu_tC", paper::eq25(r_plane), c.brach_mu_t_critical, angles)}}};
+    e25.readings = {{velocity, velocity_latex, true, {Auditor::compare("mu_tC", paper::eq25(r_velocity), c.brach_mu_t_critical)}},
+                    {on_plane, on_plane_latex, false,
+                     {Auditor::compare("mu_tC", paper::eq25(r_plane), c.brach_mu_t_critical, angles)}}};
     out.push_back(std::move(e25));
     out.push_back(formula("eq26", "eq 26: critical mu_z given mu_t, r_z = V_rzi / V_rni.",
                           {Auditor::compare("mu_zC", paper::eq26(), c.brach_mu_z_critical)}, paper::eq26()));
@@ -246,10 +234,12 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     e27.printed_latex = "\\mu_{tC} = \\frac{\\eta_t \\mu_{zC0} + \\mu_{tC0}}{1 - \\eta_t \\eta_z}, \\quad "
                         "\\mu_{zC} = \\frac{\\eta_z \\mu_{tC0} + \\mu_{zC0}}{1 - \\eta_t \\eta_z}";
     e27.readings = {{velocity,
+                     velocity_latex,
                      true,
                      {Auditor::compare("mu_tC", paper::eq27_t(r_velocity), c.brach_both_t),
                       Auditor::compare("mu_zC", paper::eq27_z(r_velocity), c.brach_both_z)}},
                     {on_plane,
+                     on_plane_latex,
                      false,
                      {Auditor::compare("mu_tC", paper::eq27_t(r_plane), c.brach_both_t, angles),
                       Auditor::compare("mu_zC", paper::eq27_z(r_plane), c.brach_both_z, angles)}}};

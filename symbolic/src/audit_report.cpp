@@ -143,7 +143,7 @@ std::string audit_markdown(const std::vector<AuditEntry>& entries, const std::st
     for (const auto& r : e.readings) {
       bool agree = true;
       for (const auto& c : r.checks) agree = agree && c.equal();
-      s += "  - " + r.description + ": " + (agree ? "agrees" : "differs") +
+      s += "  - " + r.description + ", $" + r.latex + "$: " + (agree ? "agrees" : "differs") +
            (r.used_by_implementation ? " (**the implementation's reading**)" : "") + "\n";
     }
   }
@@ -152,6 +152,9 @@ std::string audit_markdown(const std::vector<AuditEntry>& entries, const std::st
     if (status_of(e) == "claim-contradicted") s += "`" + e.id + "` (" + e.detail + ") ";
   s += "\n\n**Claims checked**: " + ids("claim-checked") + ". **Definitions**: " + ids("definition") +
        ". The paper has no equation 28.\n\n";
+  s += "**Not decided** (no computation can: they depend on Virtual CRASH's vehicle data, which the paper does not "
+       "give): Figure 8's +3.5 mph continued t sliding at mu = 0.4, the size and direction of the Sliding Impact's swerve (below 0.5 mph, upward), and the "
+       "n_i, n_z values in the figure's image. The claims above decide what follows from the equations alone.\n\n";
   s += "## Entries\n\n| id | status | comparisons | what |\n|---|---|---|---|\n";
   for (const auto& e : entries)
     s += "| `" + e.id + "` | " + status_of(e) + " | " + std::to_string(count_checks(e)) + " | " + e.detail + " |\n";

@@ -8,12 +8,11 @@ namespace {
 ex S(const char* name) { return sym(name); }
 }  // namespace
 
-matrix eq4_middle(const Derivation& d, int body) {
-  // "dV_2 + dw_2 x r_1" on the second line: the printed lever arm is r_1 for both bodies.
+matrix eq4_middle(const Derivation& d, int body, int lever_body) {
   const Body& b = d.body[body];
   const matrix& Pi = body == 0 ? d.P1 : d.P2;
-  const matrix dw = b.Jinv.mul(cross(b.r, Pi));
-  return Pi.mul_scalar(1 / b.m).add(cross(dw, d.body[0].r));
+  const matrix dw = b.Jinv.mul(cross(b.r, Pi));  // eq 2
+  return Pi.mul_scalar(1 / b.m).add(cross(dw, d.body[lever_body].r));
 }
 
 matrix eq4_right(const Derivation& d, int body) {

@@ -9,8 +9,9 @@
 
 namespace impact3d::symbolic::paper {
 
-// eq 4, both lines as printed: V_IC f - V_IC i = dV + dw x r (the middle expression).
-matrix eq4_middle(const Derivation& d, int body);
+// eq 4's middle expression dV + dw x r of `body`'s line, with the lever arm of `lever_body`: as printed,
+// both lines use r_1.
+matrix eq4_middle(const Derivation& d, int body, int lever_body);
 // eq 4, right-hand expression: P/m + [J^-1 (r x P)] x r.
 matrix eq4_right(const Derivation& d, int body);
 // eq 5, right-hand side as printed: T_i (P_i / m_i) + T_i ([J_i^-1 (r_i x P_i)] x r_i).

@@ -71,17 +71,19 @@ TEST_CASE("the audit's statuses: two errata, three ambiguities, one contradicted
   CHECK(with_status("erratum") == std::set<std::string>{"eq4", "A.c3"});
   CHECK(with_status("ambiguous") == std::set<std::string>{"eq17", "eq25", "eq27"});
   CHECK(with_status("claim-contradicted") == std::set<std::string>{"fig8.full_swerve"});
-  CHECK(with_status("definition") == std::set<std::string>{"eq1", "eq2", "eq3", "eq7", "eq13", "eq15", "eq21"});
+  // Constraints that define a strategy (eqs 16, 22) have nothing to compare; their consequence, eq 18, does.
+  CHECK(with_status("definition") ==
+        std::set<std::string>{"eq1", "eq2", "eq3", "eq7", "eq13", "eq15", "eq16", "eq21", "eq22"});
   CHECK(with_status("claim-checked") ==
         std::set<std::string>{"fig8.full_t_sliding", "fig8.vertical_impulse", "fig8.same_ratio", "fig8.not_wach",
                               "fig8.sliding_swerve", "conclusion.full_impact_cil", "conclusion.full_impact_plane",
                               "conclusion.wach", "conclusion.brach_cil"});
-  for (const char* id : {"eq5", "eq6", "eq8", "eq9", "eq10", "eq11", "eq12", "eq14", "eq16", "eq18", "eq19", "eq20",
-                         "eq22", "eq23", "eq24", "eq26", "eq29", "A.T", "A.A", "A.B", "A.C", "A.f1", "A.f2", "A.f3",
+  for (const char* id : {"eq5", "eq6", "eq8", "eq9", "eq10", "eq11", "eq12", "eq14", "eq18", "eq19", "eq20",
+                         "eq23", "eq24", "eq26", "eq29", "A.T", "A.A", "A.B", "A.C", "A.f1", "A.f2", "A.f3",
                          "A.f4", "A.f5", "A.f6", "A.f7", "A.f8", "A.a1", "A.a2", "A.a3", "A.b1", "A.b2", "A.b3", "A.c1",
                          "A.c2"})
     CHECK(status_of(entry(id)) == "verified");
-  CHECK(audit().size() == 7 + 2 + 3 + 37 + 10);  // no entry beyond these (eq 28 does not exist)
+  CHECK(audit().size() == 9 + 2 + 3 + 35 + 10);  // no entry beyond these (eq 28 does not exist)
 }
 
 TEST_CASE("every line and component of a multi-line equation is a comparison of its own", "[exam]") {
@@ -97,9 +99,15 @@ TEST_CASE("every line and component of a multi-line equation is a comparison of 
   CHECK(e17.readings[0].checks.size() == 6);
 }
 
-TEST_CASE("eq 22 compares the constraint P_t' = mu P_n itself, and eq 25 states both readings of r", "[exam]") {
-  CHECK(mentions(entry("eq22").checks, "P_t' = u . P = mu P_n"));
-  CHECK(mentions(entry("eq22").checks, "P_z' = w . P = 0"));
+TEST_CASE("eq 22 is Wach's constraint, not verified by another equation; eq 25 states both readings of r", "[exam]") {
+  // Once "verified" by comparing eq 18 on Wach's plane: the constraint itself has nothing to compare, and
+  // its consequence is eq 18's comparison, made for every plane angle.
+  CHECK(status_of(entry("eq22")) == "definition");
+  CHECK(entry("eq22").checks.empty());
+  CHECK(mentions(entry("eq18").checks, "solved in contact axes"));
+  // eq 14 compares its printed ratio with eq 20 on the phi_FI plane (not constraints that hold by construction).
+  REQUIRE(entry("eq14").checks.size() == 1);
+  CHECK(mentions(entry("eq14").checks, "against eq 20 at phi_FI"));
   const AuditEntry& e25 = entry("eq25");
   REQUIRE(e25.readings.size() == 2);
   CHECK(e25.readings[0].used_by_implementation);
@@ -148,6 +156,10 @@ TEST_CASE("an entry whose status was not produced by a comparison is rejected", 
   AuditEntry wrong_reading = entry("eq25");  // the implementation's reading does not agree
   std::swap(wrong_reading.readings[0].used_by_implementation, wrong_reading.readings[1].used_by_implementation);
   CHECK_THROWS_AS(status_of(wrong_reading), std::logic_error);
+  AuditEntry agreeing = entry("eq25");  // two readings that both agree: nothing is ambiguous
+  agreeing.readings[1] = agreeing.readings[0];
+  agreeing.readings[1].used_by_implementation = false;
+  CHECK_THROWS_AS(status_of(agreeing), std::logic_error);
 }
 
 // The committed generated/audit.json, read as a tool would: each status follows from the comparisons
@@ -180,15 +192,18 @@ TEST_CASE("every status in generated/audit.json follows from its listed comparis
       CHECK(it.contains("corrected"));
     } else if (status == "ambiguous") {
       REQUIRE(it.at("readings").size() >= 2);
-      int implementation = 0;
+      int implementation = 0, differing = 0;
       for (const auto& r : it.at("readings")) {
         CHECK(!r.at("comparisons").empty());
         if (r.at("used_by_implementation")) {
           ++implementation;
           CHECK(all(r.at("comparisons"), "result", "equal"));
+        } else if (!all(r.at("comparisons"), "result", "equal")) {
+          ++differing;
         }
       }
       CHECK(implementation == 1);
+      CHECK(differing >= 1);
     } else if (status == "claim-checked" || status == "claim-contradicted") {
       CHECK(!cmp.empty());
       bool holds = true;

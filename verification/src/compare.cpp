@@ -224,6 +224,15 @@ class Comparer {
 
   bool subset() const { return o_.subset; }
 
+  // The reference has null (an angle undefined here, as a swerve angle with no sliding after) and the other
+  // side a value: a value where there is none is a failure, not something to skip.
+  Field undefined_here(const std::string& path, const Leaf& l, int result, const std::string& other) const {
+    Field f{path, false, 0, "reference null (undefined here), other " + other, true};
+    f.leaf = l.dotted;
+    f.result = result;
+    return f;
+  }
+
   Field missing(const std::string& path, const char* what = "missing") const { return {path, false, 0, what}; }
 
   // `result`: the index of the reference result the leaf belongs to, -1 for a leaf from the top.
@@ -248,7 +257,8 @@ class Comparer {
         const std::string text(cell);  // at most kCellChars
         char* end = nullptr;
         const double b = std::strtod(text.c_str(), &end);
-        if (end == text.c_str() || *end != '\0') return mismatch(path, l, excerpt(cell), ": not a number");
+        // The whole cell, NUL bytes included: "1\0junk" is not the number 1.
+        if (end != text.c_str() + text.size() || text.empty()) return mismatch(path, l, excerpt(cell), ": not a number");
         if (!std::isfinite(b)) return mismatch(path, l, excerpt(cell), ": not a finite number");
         return number(path, l, b);
       }
@@ -356,7 +366,10 @@ class Comparer {
   CaseReport compare_fields(const RefCase& rc, const json& other) const {
     CaseReport r{rc.name, {}, false, std::nullopt};
     for (const auto& l : rc.top) {
-      if (l.value.is_null()) continue;
+      if (l.value.is_null()) {
+        if (const json* v = find(other, l.parts); v && !v->is_null()) r.fields.push_back(undefined_here(l.dotted, l, -1, describe(*v)));
+        continue;
+      }
       if (const json* v = find(other, l.parts)) r.fields.push_back(from_json(l.dotted, l, -1, *v));
       else if (required(l)) r.fields.push_back(missing(l.dotted));
     }
@@ -382,7 +395,11 @@ class Comparer {
         continue;
       }
       for (const auto& l : rc.results[i]) {
-        if (l.value.is_null()) continue;
+        if (l.value.is_null()) {
+          if (const json* v = find(o, l.parts); v && !v->is_null())
+            r.fields.push_back(undefined_here(base + "." + l.dotted, l, static_cast<int>(i), describe(*v)));
+          continue;
+        }
         if (const json* v = find(o, l.parts)) {
           Comparer at = *this;
           if (o_.rtol_from_bound) at.tol_.atol = angle_atol(rc.numbers[i], l);
@@ -534,8 +551,8 @@ CsvFile read_csv(const std::string& file, const std::vector<RefCase>& refs, cons
     for (std::size_t t = 0; t < rc.top.size(); ++t) {
       const Leaf& l = rc.top[t];
       const auto cell = cell_of(l);
-      if (!cell || l.value.is_null()) continue;
-      Field f = cmp.from_cell(l.dotted, l, -1, *cell);
+      if (!cell || (l.value.is_null() && *cell == "null")) continue;
+      Field f = l.value.is_null() ? cmp.undefined_here(l.dotted, l, -1, excerpt(*cell)) : cmp.from_cell(l.dotted, l, -1, *cell);
       if (!f.pass) f.detail += fmt::format(" (row {})", row);
       if (!cc.top[t] || (cc.top[t]->pass && !f.pass)) cc.top[t] = std::move(f);
     }
@@ -543,7 +560,10 @@ CsvFile read_csv(const std::string& file, const std::vector<RefCase>& refs, cons
     const std::string base = fmt::format("results.{}.", *i);
     for (const Leaf& l : rc.results[*i]) {
       const auto cell = cell_of(l);
-      if (l.value.is_null()) continue;
+      if (l.value.is_null()) {  // undefined in the reference: an empty cell or "null" agrees
+        if (cell && *cell != "null") fields.push_back(cmp.undefined_here(base + l.dotted, l, static_cast<int>(*i), excerpt(*cell)));
+        continue;
+      }
       if (cell) fields.push_back(cmp.from_cell(base + l.dotted, l, static_cast<int>(*i), *cell));
       else if (!cmp.subset() && column.count(l.dotted))
         fields.push_back(cmp.missing(base + l.dotted, "missing (an empty cell in a column of the CSV)"));
@@ -632,7 +652,7 @@ int report(const std::vector<RefCase>& refs, std::vector<std::optional<CaseRepor
       }
     }
     results_given += given.size();
-    cases_given += n > 0 ? 1 : 0;
+    cases_given += r.fields.empty() || r.fields.front().path != "case missing" ? 1 : 0;
     if (failed) ++failed_cases;
     std::string err = fmt::format("{:.3e}", largest ? largest->rel : 0.0), field = largest && largest->rel > 0 ? largest->path : "-";
     if (named) {
@@ -722,6 +742,8 @@ int compare(const std::string& reference, const std::string& other, const Compar
   if (fs::path(other).extension() == ".csv") {
     if (o.rtol_from_bound)
       throw CaseError(other, "--rtol-from-bound takes each case's tolerance from its result JSON's rounding_bound; a CSV has none");
+    if (o.all_fields)
+      throw CaseError(other, "--all requires every field of a result file; a CSV is compared on its columns, so name them");
     const CsvFile file = read_csv(other, refs, cmp);
     csv_columns = file.columns;
     const auto& csv = file.cases;

@@ -41,7 +41,14 @@ const std::vector<UnitFactor>& unit_factors() {
   return factors;
 }
 
-bool close(double want, double got, double rtol, double atol) { return std::fabs(got - want) <= atol + rtol * std::fabs(want); }
+// A diagnosis looks for a pattern, not a pass: another tool's numbers printed to 6 digits are still
+// "the reference negated" though they fail a 1e-9 comparison. So each looks within the comparison's
+// tolerance or 1e-4 relative, whichever is wider.
+constexpr double kDiagnosisRtol = 1e-4;
+
+bool close(double want, double got, double rtol, double atol) {
+  return std::fabs(got - want) <= atol + std::max(rtol, kDiagnosisRtol) * std::fabs(want);
+}
 
 // The first part of a path: the quantity a failure belongs to (impulse, vehicles, energy, coefficients).
 std::string group(const std::string& leaf) { return leaf.substr(0, leaf.find('.')); }
@@ -87,19 +94,30 @@ std::vector<std::string> diagnose(const std::vector<NumericFailure>& failures) {
         "is vehicle 2's minus vehicle 1's at the impulse centre (docs/case-format.md).",
         negated, n, groups(negated_groups)));
 
+  // Vehicles numbered the other way exchange the vehicles' fields, and negate the impulse on vehicle 1
+  // and the relative velocity: both count, once some vehicle field is seen exchanged.
+  std::map<std::string, int> swapped_groups;
+  const auto swapped_vehicle = [&](const NumericFailure& f) {
+    const auto swapped = other_vehicle(f.leaf);
+    if (!swapped || !f.result_numbers) return false;
+    const auto it = f.result_numbers->find(*swapped);
+    return it != f.result_numbers->end() && close(it->second, f.other, f.rtol, f.atol);
+  };
+  const std::size_t swapped = count(swapped_vehicle, swapped_groups);
   std::map<std::string, int> exchanged_groups;
-  const std::size_t exchanged = count(
-      [&](const NumericFailure& f) {
-        const auto swapped = other_vehicle(f.leaf);
-        if (!swapped || !f.result_numbers) return false;
-        const auto it = f.result_numbers->find(*swapped);
-        return it != f.result_numbers->end() && close(it->second, f.other, f.rtol, f.atol);
-      },
-      exchanged_groups);
+  const std::size_t exchanged =
+      swapped == 0 ? 0
+                   : count(
+                         [&](const NumericFailure& f) {
+                           if (other_vehicle(f.leaf)) return swapped_vehicle(f);
+                           return signed_value(f) && close(-f.reference, f.other, f.rtol, f.atol);
+                         },
+                         exchanged_groups);
   if (2 * exchanged > n)
     out.push_back(fmt::format(
-        "diagnosis: {} of {} failing numbers are the other vehicle's reference values ({}): the other tool may number "
-        "the vehicles the other way. Here vehicle 1 is the one the normal points into (docs/case-format.md).",
+        "diagnosis: {} of {} failing numbers are what numbering the vehicles the other way gives: the other vehicle's "
+        "values, or the impulse and relative velocity negated ({}). Here vehicle 1 is the one the normal points into "
+        "(docs/case-format.md).",
         exchanged, n, groups(exchanged_groups)));
 
   std::map<std::string, int> unit_groups;

@@ -4,14 +4,16 @@
 
 #include <stdexcept>
 
+#include "render_exact.hpp"
+
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/io/render.hpp"
 #include "impact3d/io/report_text.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
 
 namespace impact3d::io {
-namespace {
 #if IMPACT3D_MULTIPRECISION
+namespace {
 
 struct ExactText {
   UnitFactors<rational> f;
@@ -129,6 +131,8 @@ std::string exact_text(const CaseSpec& spec, const std::string& scene_not_ration
   return s;
 }
 
+}  // namespace
+
 std::string render_exact(const CaseSpec& spec, const RenderOptions& o) {
   std::optional<ExactAnalysis> x;
   std::string not_rational;
@@ -145,31 +149,5 @@ std::string render_exact(const CaseSpec& spec, const RenderOptions& o) {
          exact_text(spec, not_rational, x);
 }
 #endif
-
-}  // namespace
-
-std::vector<std::string> precision_names() {
-  std::vector<std::string> names;
-  for (const auto& p : kPrecisions) names.emplace_back(p.name);
-#if IMPACT3D_MULTIPRECISION
-  names.emplace_back("exact");
-#endif
-  return names;
-}
-
-std::string render(const CaseSpec& spec, std::string_view precision, const RenderOptions& o) {
-#if IMPACT3D_MULTIPRECISION
-  if (precision == "exact") return render_exact(spec, o);
-#endif
-  std::string out;
-  bool found = false;
-  for_each_scalar([&]<typename Scalar>(std::type_identity<Scalar>) {
-    if (precision_name<Scalar> != precision) return;
-    out = render<Scalar>(spec, o);
-    found = true;
-  });
-  if (!found) throw std::invalid_argument("no precision named " + std::string(precision));
-  return out;
-}
 
 }  // namespace impact3d::io

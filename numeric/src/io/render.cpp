@@ -1,0 +1,35 @@
+// A result rendered for a precision named by the user: one of the scalar list, or exact.
+#include <stdexcept>
+
+#include "render_exact.hpp"
+
+#include "impact3d/io/render.hpp"
+#include "impact3d/numeric/scalars.hpp"
+
+namespace impact3d::io {
+
+std::vector<std::string> precision_names() {
+  std::vector<std::string> names;
+  for (const auto& p : kPrecisions) names.emplace_back(p.name);
+#if IMPACT3D_MULTIPRECISION
+  names.emplace_back("exact");
+#endif
+  return names;
+}
+
+std::string render(const CaseSpec& spec, std::string_view precision, const RenderOptions& o) {
+#if IMPACT3D_MULTIPRECISION
+  if (precision == "exact") return render_exact(spec, o);
+#endif
+  std::string out;
+  bool found = false;
+  for_each_scalar([&]<typename Scalar>(std::type_identity<Scalar>) {
+    if (precision_name<Scalar> != precision) return;
+    out = render<Scalar>(spec, o);
+    found = true;
+  });
+  if (!found) throw std::invalid_argument("no precision named " + std::string(precision));
+  return out;
+}
+
+}  // namespace impact3d::io
