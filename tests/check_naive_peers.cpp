@@ -6,56 +6,19 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
-#include "naive/pc_crash.hpp"
-#include "support.hpp"
+#include "cli_process.hpp"
+#include "impact3d/numeric/analysis.hpp"
+#include "peer_collisions.hpp"
 
 using namespace impact3d;
 using namespace impact3d::test;
 
 namespace {
-
-struct Collision {
-  bench::NaiveCase raw;
-  Scene<double> scene;
-};
-
-// Seeded random approaching collisions, as raw parameters and as the scene impact3d builds from them.
-std::vector<Collision> collisions(std::size_t n) {
-  std::mt19937_64 g(20261121);
-  std::uniform_real_distribution<double> u(0, 1);
-  auto in = [&](double a, double b) { return a + (b - a) * u(g); };
-  std::vector<Collision> out;
-  while (out.size() < n) {
-    Collision k{};
-    bench::NaiveCase& c = k.raw;
-    Scene<double>& s = k.scene;
-    for (int i = 0; i < 2; ++i) {
-      RigidBody<double> b = random_body(g);  // full tensors, velocities, impulse centres
-      bench::NaiveVehicle& v = c.veh[i];
-      v.mass = b.mass;
-      for (int p = 0; p < 3; ++p) {
-        for (int q = 0; q < 3; ++q) v.J[p][q] = b.J_B(p, q);
-        v.v[p] = b.v_W[p];
-        v.w[p] = b.w_B[p];
-        v.r[p] = b.p_CgIc_B[p];
-      }
-      v.yaw = in(-180, 180), v.pitch = in(-12, 12), v.roll = in(-12, 12);
-      b.R_WB = rotation_zyx_deg(v.yaw, v.pitch, v.roll);
-      s.body[i] = b;
-    }
-    c.normal_yaw = in(-180, 180), c.normal_pitch = in(-25, 25), c.tangent_roll = in(-30, 30);
-    s.R_WC = rotation_zyx_deg(c.normal_yaw, c.normal_pitch, c.tangent_roll);
-    c.restitution = s.restitution = u(g);
-    c.mu = in(0.05, 1.5);
-    if (relative_velocity_C(s).x() > 1.0) out.push_back(k);  // approaching, as impact3d requires
-  }
-  return out;
-}
 
 // A peer's impulses against impact3d's, case by case: counts and the worst relative difference.
 struct Agreement {
@@ -63,14 +26,14 @@ struct Agreement {
   double worst = 0;
 };
 
-Agreement agree(const std::vector<Collision>& cs, const std::vector<bench::NaiveImpulse>& peer) {
+Agreement agree(const std::vector<bench::NaiveCase>& cs, const std::vector<bench::NaiveImpulse>& peer) {
   Agreement r;
   REQUIRE(peer.size() == cs.size());
   for (std::size_t k = 0; k < cs.size(); ++k) {
-    const auto a = analyze(cs[k].scene, {PcCrash<double>{cs[k].raw.mu}});
+    const auto a = analyze(bench::scene_of(cs[k]), {PcCrash<double>{cs[k].mu}});
     const auto& sol = a.solutions[0].impulse;
     // A mu within rounding of the GIR may fall on either side in two computations: not a comparison.
-    if (std::abs(cs[k].raw.mu - *sol.gir) <= rounding::agreement_bound(a.amplification) * *sol.gir) {
+    if (std::abs(cs[k].mu - *sol.gir) <= rounding::agreement_bound(a.amplification) * *sol.gir) {
       ++r.near_threshold;
       continue;
     }
@@ -99,14 +62,14 @@ void check_agreement(const Agreement& r) {
 }  // namespace
 
 TEST_CASE("the naive C++ pc-crash peer agrees with impact3d on seeded random collisions", "[peers]") {
-  const auto cs = collisions(2000);
+  const auto cs = bench::random_collisions(2000, 20261121);
   std::vector<bench::NaiveImpulse> peer;
-  for (const auto& k : cs) peer.push_back(bench::naive_pc_crash(k.raw));
+  for (const auto& c : cs) peer.push_back(bench::naive_pc_crash(c));
   check_agreement(agree(cs, peer));
 }
 
 TEST_CASE("the NumPy pc-crash peer agrees with impact3d on the same collisions", "[peers]") {
-  const auto cs = collisions(2000);
+  const auto cs = bench::random_collisions(2000, 20261121);
   const auto dir = std::filesystem::temp_directory_path() / ("impact3d-peers-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   {
@@ -122,8 +85,7 @@ TEST_CASE("the NumPy pc-crash peer agrees with impact3d on the same collisions",
         for (int p = 0; p < 3; ++p) csv << "," << k << p << "_" << i;
     }
     csv << ",normal_yaw,normal_pitch,tangent_roll,restitution,mu\n";
-    for (const auto& k : cs) {
-      const bench::NaiveCase& c = k.raw;
+    for (const bench::NaiveCase& c : cs) {
       for (int i = 0; i < 2; ++i) {
         const bench::NaiveVehicle& v = c.veh[i];
         csv << (i == 0 ? "" : ",") << v.mass;
@@ -137,11 +99,12 @@ TEST_CASE("the NumPy pc-crash peer agrees with impact3d on the same collisions",
           << "\n";
     }
   }
-  // Fixed paths written by the test itself: no outside text reaches the shell.
-  const std::string cmd = std::string("'") + IMPACT3D_PYTHON + "' '" + IMPACT3D_BENCH_DIR + "/naive/pc_crash.py' < '" +
-                          (dir / "cases.csv").string() + "' > '" + (dir / "impulses.csv").string() + "'";
-  REQUIRE(std::system(cmd.c_str()) == 0);
-  std::ifstream in(dir / "impulses.csv");
+  // The peer's own program on the test's own file, run without a shell; it is not hostile input, so it
+  // gets no address-space limit (NumPy's threads reserve much).
+  const Run py = run_program(IMPACT3D_PYTHON, {IMPACT3D_BENCH_DIR "/naive/pc_crash.py"}, (dir / "cases.csv").string(), "", 120, 0);
+  INFO(py.err);
+  REQUIRE(py.status == 0);
+  std::istringstream in(py.out);
   std::vector<bench::NaiveImpulse> peer;
   for (std::string line; std::getline(in, line);) {
     bench::NaiveImpulse n{};

@@ -29,6 +29,47 @@ struct Run {
   std::string out, err;
 };
 
+// `program ARGS` with the arguments passed as they are (no shell: they may hold quotes and newlines),
+// standard input from `stdin_path` (/dev/null when empty), in `dir` when given, with at most
+// `cpu_seconds` of CPU time and, outside sanitizer builds (whose shadow memory needs the address space)
+// and when `memory_mib` > 0, that much address space: a hostile input must be rejected within both.
+inline Run run_program(const std::string& program, const std::vector<std::string>& args, const std::string& stdin_path = "",
+                       const std::string& dir = "", int cpu_seconds = 20, long memory_mib = 2048) {
+  namespace fs = std::filesystem;
+  static int calls = 0;
+  const fs::path work = fs::temp_directory_path() / fmt::format("impact3d-argv-{}-{}", ::getpid(), calls++);
+  fs::create_directories(work);
+  const std::string out = (work / "out").string(), err = (work / "err").string();
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int in = ::open(stdin_path.empty() ? "/dev/null" : stdin_path.c_str(), O_RDONLY),
+              o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644),
+              e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (in < 0) ::_exit(126);
+    ::dup2(in, 0), ::dup2(o, 1), ::dup2(e, 2);
+    if (!dir.empty() && ::chdir(dir.c_str()) != 0) ::_exit(126);
+    const rlimit cpu{static_cast<rlim_t>(cpu_seconds), static_cast<rlim_t>(cpu_seconds)};
+    ::setrlimit(RLIMIT_CPU, &cpu);
+#ifndef IMPACT3D_SANITIZED
+    if (memory_mib > 0) {
+      const rlimit as{static_cast<rlim_t>(memory_mib) << 20, static_cast<rlim_t>(memory_mib) << 20};
+      ::setrlimit(RLIMIT_AS, &as);
+    }
+#endif
+    std::vector<char*> argv{const_cast<char*>(program.c_str())};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(program.c_str(), argv.data());
+    ::_exit(127);
+  }
+  int raw = 0;
+  ::waitpid(pid, &raw, 0);
+  Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  fs::remove_all(work);
+  return r;
+}
+
+#ifdef IMPACT3D_CLI
 // `impact3d ARGS`, after `prefix` (e.g. "env PATH=/nonexistent"), with no standard input.
 inline Run run_cli(const std::string& args, const std::string& prefix = "") {
   namespace fs = std::filesystem;
@@ -43,40 +84,11 @@ inline Run run_cli(const std::string& args, const std::string& prefix = "") {
   return r;
 }
 
-// `impact3d ARGS` with the arguments passed as they are (no shell: they may hold quotes and newlines),
-// in `dir` when given, with at most `cpu_seconds` of CPU time and, outside sanitizer builds (whose
-// shadow memory needs the address space), `memory_mib` of address space: a hostile input must be
-// rejected within both.
+// `impact3d ARGS` through run_program, with no standard input.
 inline Run run_argv(const std::vector<std::string>& args, const std::string& dir = "", int cpu_seconds = 20,
                     long memory_mib = 2048) {
-  namespace fs = std::filesystem;
-  static int calls = 0;
-  const fs::path work = fs::temp_directory_path() / fmt::format("impact3d-argv-{}-{}", ::getpid(), calls++);
-  fs::create_directories(work);
-  const std::string out = (work / "out").string(), err = (work / "err").string();
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int in = ::open("/dev/null", O_RDONLY), o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644),
-              e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(in, 0), ::dup2(o, 1), ::dup2(e, 2);
-    if (!dir.empty() && ::chdir(dir.c_str()) != 0) ::_exit(126);
-    const rlimit cpu{static_cast<rlim_t>(cpu_seconds), static_cast<rlim_t>(cpu_seconds)};
-    ::setrlimit(RLIMIT_CPU, &cpu);
-#ifndef IMPACT3D_SANITIZED
-    const rlimit as{static_cast<rlim_t>(memory_mib) << 20, static_cast<rlim_t>(memory_mib) << 20};
-    ::setrlimit(RLIMIT_AS, &as);
-#endif
-    std::vector<char*> argv{const_cast<char*>(IMPACT3D_CLI)};
-    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv(IMPACT3D_CLI, argv.data());
-    ::_exit(127);
-  }
-  int raw = 0;
-  ::waitpid(pid, &raw, 0);
-  Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
-  fs::remove_all(work);
-  return r;
+  return run_program(IMPACT3D_CLI, args, "", dir, cpu_seconds, memory_mib);
 }
+#endif
 
 }  // namespace impact3d::test

@@ -5,8 +5,9 @@ tests/check_naive_peers.cpp holds it to impact3d.
 
 As a program: reads a CSV of collisions (the columns of COLUMNS, one row each) on standard input and
 writes P_n, P_t, P_z and the regime (1 Full Impact, 0 Sliding Impact) per row on standard output.
-With --benchmark N: times pc_crash on N random approaching collisions drawn as bench/bench_peers.cpp
-draws them (mu = 0.5, eps = 0.1) and prints the best of 5 runs in ns per collision.
+With --benchmark N: times pc_crash on N random approaching collisions, drawn as bench/peer_collisions.hpp
+draws them, at mu = 0.5 and eps = 0.1 as bench/bench_peers.cpp times them; prints the best of 5 runs in
+ns per collision.
 """
 import sys
 
@@ -62,7 +63,7 @@ def pc_crash(d):
 
 
 def random_collisions(n, seed):
-    """As bench/bench_peers.cpp draws them; the approaching ones are kept (about half)."""
+    """As bench/peer_collisions.hpp draws them; the approaching ones are kept."""
     g = np.random.default_rng(seed)
     m = 4 * n
     d = {}
@@ -77,10 +78,11 @@ def random_collisions(n, seed):
             for q in range(3):
                 d[f"J{p}{q}_{i}"] = J[:, p, q]
         d[f"yaw_{i}"], d[f"pitch_{i}"], d[f"roll_{i}"] = g.uniform(-180, 180, m), g.uniform(-12, 12, m), g.uniform(-12, 12, m)
-        for k, lim in (("v", 25), ("w", 0.3), ("r", 1.5)):
+        for k, lo, hi in (("v", (-25, -25, -1), (25, 25, 1)), ("w", (-0.3, -0.3, -1.5), (0.3, 0.3, 1.5)),
+                          ("r", (-2.6, -1.0, -0.5), (2.6, 1.0, 0.4))):
             for p in range(3):
-                d[f"{k}{p}_{i}"] = g.uniform(-lim, lim, m)
-    d["normal_yaw"], d["normal_pitch"], d["tangent_roll"] = g.uniform(-180, 180, m), g.uniform(-10, 10, m), g.uniform(-20, 20, m)
+                d[f"{k}{p}_{i}"] = g.uniform(lo[p], hi[p], m)
+    d["normal_yaw"], d["normal_pitch"], d["tangent_roll"] = g.uniform(-180, 180, m), g.uniform(-25, 25, m), g.uniform(-30, 30, m)
     d["restitution"], d["mu"] = np.full(m, 0.1), np.full(m, 0.5)
     # Approaching: the normal relative velocity, as pc_crash computes it, above 1 m/s.
     RC = rotation(d["normal_yaw"], d["normal_pitch"], d["tangent_roll"])

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "audit_checks.hpp"
+#include "codegen.hpp"
 #include "audit_parts.hpp"
 
 namespace impact3d::symbolic {
@@ -259,6 +260,42 @@ std::string status_of(const AuditEntry& e) {
 }  // namespace impact3d::symbolic
 
 namespace impact3d::symbolic {
+
+AuditEntry definition(const std::string& id, const std::string& detail) {
+  AuditEntry e;
+  e.id = id;
+  e.kind = EntryKind::definition;
+  e.detail = detail;
+  return e;
+}
+
+AuditEntry formula(const std::string& id, const std::string& detail, std::vector<Check> checks,
+                   const std::string& printed_latex) {
+  AuditEntry e = definition(id, detail);
+  e.kind = EntryKind::formula;
+  e.checks = std::move(checks);
+  e.printed_latex = printed_latex;
+  return e;
+}
+
+AuditEntry ambiguous(const std::string& id, const std::string& detail, const std::string& printed_latex,
+                     std::vector<Reading> readings) {
+  AuditEntry e = definition(id, detail);
+  e.kind = EntryKind::ambiguous;
+  e.printed_latex = printed_latex;
+  e.readings = std::move(readings);
+  return e;
+}
+
+AuditEntry claim(const std::string& id, const std::string& words, const std::string& detail, std::vector<Check> checks) {
+  AuditEntry e = definition(id, detail);
+  e.kind = EntryKind::claim;
+  e.claim = words;
+  e.checks = std::move(checks);
+  return e;
+}
+
+std::string tex(const ex& e) { return latex(e, latex_names()); }
 
 std::vector<AuditEntry> run_audit(const Derivation& d, const AppendixA& a, const ClosedForms& c) {
   std::vector<AuditEntry> entries;

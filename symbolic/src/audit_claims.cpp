@@ -9,20 +9,6 @@ namespace impact3d::symbolic {
 
 using namespace GiNaC;
 
-namespace {
-
-AuditEntry claim(const std::string& id, const std::string& words, const std::string& detail, std::vector<Check> checks) {
-  AuditEntry e;
-  e.id = id;
-  e.kind = EntryKind::claim;
-  e.claim = words;
-  e.detail = detail;
-  e.checks = std::move(checks);
-  return e;
-}
-
-}  // namespace
-
 void audit_claims(std::vector<AuditEntry>& out, const ClosedForms& general) {
   // K is symmetric (eq 9's derivation): b1 = a2, c1 = a3, c2 = b3. A claim is decided on symmetric K; a
   // rational function not identically zero there is nonzero on all but a thin set of configurations, so

@@ -13,24 +13,6 @@ namespace {
 
 const std::vector<std::string> kBodyAxes = {"x (vehicle axes)", "y (vehicle axes)", "z (vehicle axes)"};
 
-AuditEntry definition(const std::string& id, const std::string& detail) {
-  AuditEntry e;
-  e.id = id;
-  e.kind = EntryKind::definition;
-  e.detail = detail;
-  return e;
-}
-
-AuditEntry formula(const std::string& id, const std::string& detail, std::vector<Check> checks, const ex& printed = ex()) {
-  AuditEntry e;
-  e.id = id;
-  e.kind = EntryKind::formula;
-  e.detail = detail;
-  e.checks = std::move(checks);
-  if (!printed.is_zero()) e.printed_latex = latex(printed, latex_names());
-  return e;
-}
-
 void append(std::vector<Check>& to, std::vector<Check> more) {
   for (auto& c : more) to.push_back(std::move(c));
 }
@@ -112,7 +94,7 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     const char* what[3] = {"eq 10: Full Impact P_n", "eq 11: Full Impact P_t", "eq 12: Full Impact P_z"};
     for (int i = 0; i < 3; ++i)
       out.push_back(formula(name[i], std::string(what[i]) + ", against K P = m'(1 + eps) V_ri solved for P.",
-                            {Auditor::compare(what[i], printed_fi(i, 0), c.full_impact(i, 0))}, printed_fi(i, 0)));
+                            {Auditor::compare(what[i], printed_fi(i, 0), c.full_impact(i, 0))}, tex(printed_fi(i, 0))));
   }
   out.push_back(definition("eq13", "Definition of the contact-plane resultant P_CP."));
   {
@@ -157,16 +139,14 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     Reading unprimed{"a_i, b_i are eq 9's coefficients in contact axes (the same unprimed letters)",
                      "a_i \\to K_{i1}, \\; b_i \\to K_{i2}", false, {}};
     append(unprimed.checks, Auditor::compare_each("middle form", rows, paper::eq17_middle(), derived, angles));
-    AuditEntry e;
-    e.id = "eq17";
-    e.kind = EntryKind::ambiguous;
-    e.detail = "eq 17 reuses the unprimed a, b of eq 9 for the coefficients on the solution plane. Read as eq 9's "
-               "coefficients it differs from the derivation unless phi = 0; read as the plane frame's coefficients "
-               "(Q K Q^T, Q's rows n, u, w) all three rows agree, including the third (the velocity across the plane: "
-               "swerve). The implementation uses the plane frame's coefficients.";
-    e.printed_latex = "m'(V_{rbf} - V_{rbi}) = -(a_3 P_n + b_3 P_{CP}) = -(a_3 + \\mu_{user} b_3) P_n";
-    e.readings = {std::move(plane), std::move(unprimed)};
-    out.push_back(std::move(e));
+    out.push_back(ambiguous(
+        "eq17",
+        "eq 17 reuses the unprimed a, b of eq 9 for the coefficients on the solution plane. Read as eq 9's "
+        "coefficients it differs from the derivation unless phi = 0; read as the plane frame's coefficients "
+        "(Q K Q^T, Q's rows n, u, w) all three rows agree, including the third (the velocity across the plane: "
+        "swerve). The implementation uses the plane frame's coefficients.",
+        "m'(V_{rbf} - V_{rbi}) = -(a_3 P_n + b_3 P_{CP}) = -(a_3 + \\mu_{user} b_3) P_n",
+        {std::move(plane), std::move(unprimed)}));
   }
   const exmap plane = plane_symbols_in_contact_terms(c);
   out.push_back(formula("eq18", "eq 18: the Sliding Impact's P_n on a plane at any phi (PC-Crash's phi_FI, Wach's phi), "
@@ -175,16 +155,16 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
                         {Auditor::compare("P_n", paper::eq18(), c.plane_Pn.subs(plane), angles),
                          Auditor::compare("P_n, solved in contact axes with the full K", paper::eq18(),
                                           c.plane_P_contact(0, 0), angles)},
-                        paper::eq18()));
+                        tex(paper::eq18())));
   out.push_back(formula("eq19", "eq 19: critical impulse ratio on the plane, r = V_rCPi / V_rni.",
                         {Auditor::compare("mu_CIR", paper::eq19(), c.plane_critical.subs(plane), angles),
                          Auditor::compare("mu_CIR, solved in contact axes with the full K", paper::eq19(),
                                           c.plane_critical_contact, angles)},
-                        paper::eq19()));
+                        tex(paper::eq19())));
   out.push_back(formula("eq20", "eq 20: generalized impulse ratio, eq 19 at eps = 0.",
                         {Auditor::compare("mu_GIR", paper::eq20(), c.plane_critical.subs(plane).subs(exmap{{sym("eps"), 0}}),
                                           angles)},
-                        paper::eq20()));
+                        tex(paper::eq20())));
   out.push_back(definition("eq21", "Definition of Wach's plane angle; the implementation uses atan2(V_rzi, V_rti) so "
                                    "that the plane follows the sliding's sense."));
   out.push_back(definition("eq22", "Wach's constraint P_t' = mu P_n along t' = (0, cos phi, sin phi) at eq 21's phi; with "
@@ -203,7 +183,7 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
                         {Auditor::compare("P_n", paper::eq24(), c.brach_P(0, 0)),
                          Auditor::compare("P_t = mu_t P_n", sym("mut") * c.brach_P(0, 0), c.brach_P(1, 0)),
                          Auditor::compare("P_z = mu_z P_n", sym("muz") * c.brach_P(0, 0), c.brach_P(2, 0))},
-                        paper::eq24()));
+                        tex(paper::eq24())));
   {
     const ex r_velocity = sym("Vt") / sym("Vn");
     const ex r_plane = (sym("Vt") * cp + sym("Vz") * sp) / sym("Vn");
@@ -211,39 +191,35 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
     const std::string on_plane = "r = V_rCPi / V_rni as eq 19 defines it, V_rCPi = V_rti cos phi_FI + V_rzi sin phi_FI";
     const std::string velocity_latex = "r = V_{rti} / V_{rni}";
     const std::string on_plane_latex = "r = (V_{rti} \\cos\\phi_{FI} + V_{rzi} \\sin\\phi_{FI}) / V_{rni}";
-    AuditEntry e25;
-    e25.id = "eq25";
-    e25.kind = EntryKind::ambiguous;
-    e25.detail = "eq 25 uses an r the paper defines only on the phi_FI plane (eq 19); eq 26 defines r_z for the z axis. "
-                 "With r = V_rti / V_rni it is the derived critical ratio; with eq 19's r it is not. The implementation "
-                 "uses V_rti / V_rni.";
-    e25.printed_latex = "\\mu_{tC} = \\eta_t \\mu_z + \\mu_{tC0}, \\quad \\eta_t = \\frac{r c_1 - (1+\\varepsilon) c_2}"
-                        "{(1+\\varepsilon) b_2 - r b_1}, \\quad \\mu_{tC0} = \\frac{r a_1 - (1+\\varepsilon) a_2}"
-                        "{(1+\\varepsilon) b_2 - r b_1}";
-    e25.readings = {{velocity, velocity_latex, true, {Auditor::compare("mu_tC", paper::eq25(r_velocity), c.brach_mu_t_critical)}},
-                    {on_plane, on_plane_latex, false,
-                     {Auditor::compare("mu_tC", paper::eq25(r_plane), c.brach_mu_t_critical, angles)}}};
-    out.push_back(std::move(e25));
+    out.push_back(ambiguous(
+        "eq25",
+        "eq 25 uses an r the paper defines only on the phi_FI plane (eq 19); eq 26 defines r_z for the z axis. With "
+        "r = V_rti / V_rni it is the derived critical ratio; with eq 19's r it is not. The implementation uses "
+        "V_rti / V_rni.",
+        "\\mu_{tC} = \\eta_t \\mu_z + \\mu_{tC0}, \\quad \\eta_t = \\frac{r c_1 - (1+\\varepsilon) c_2}"
+        "{(1+\\varepsilon) b_2 - r b_1}, \\quad \\mu_{tC0} = \\frac{r a_1 - (1+\\varepsilon) a_2}"
+        "{(1+\\varepsilon) b_2 - r b_1}",
+        {{velocity, velocity_latex, true, {Auditor::compare("mu_tC", paper::eq25(r_velocity), c.brach_mu_t_critical)}},
+         {on_plane, on_plane_latex, false,
+          {Auditor::compare("mu_tC", paper::eq25(r_plane), c.brach_mu_t_critical, angles)}}}));
     out.push_back(formula("eq26", "eq 26: critical mu_z given mu_t, r_z = V_rzi / V_rni.",
-                          {Auditor::compare("mu_zC", paper::eq26(), c.brach_mu_z_critical)}, paper::eq26()));
-    AuditEntry e27;
-    e27.id = "eq27";
-    e27.kind = EntryKind::ambiguous;
-    e27.detail = "eq 27 combines eqs 25 and 26 and inherits eq 25's r: with r = V_rti / V_rni both ratios are the "
-                 "derived ones; with eq 19's r they are not. The implementation uses V_rti / V_rni.";
-    e27.printed_latex = "\\mu_{tC} = \\frac{\\eta_t \\mu_{zC0} + \\mu_{tC0}}{1 - \\eta_t \\eta_z}, \\quad "
-                        "\\mu_{zC} = \\frac{\\eta_z \\mu_{tC0} + \\mu_{zC0}}{1 - \\eta_t \\eta_z}";
-    e27.readings = {{velocity,
-                     velocity_latex,
-                     true,
-                     {Auditor::compare("mu_tC", paper::eq27_t(r_velocity), c.brach_both_t),
-                      Auditor::compare("mu_zC", paper::eq27_z(r_velocity), c.brach_both_z)}},
-                    {on_plane,
-                     on_plane_latex,
-                     false,
-                     {Auditor::compare("mu_tC", paper::eq27_t(r_plane), c.brach_both_t, angles),
-                      Auditor::compare("mu_zC", paper::eq27_z(r_plane), c.brach_both_z, angles)}}};
-    out.push_back(std::move(e27));
+                          {Auditor::compare("mu_zC", paper::eq26(), c.brach_mu_z_critical)}, tex(paper::eq26())));
+    out.push_back(ambiguous(
+        "eq27",
+        "eq 27 combines eqs 25 and 26 and inherits eq 25's r: with r = V_rti / V_rni both ratios are the derived ones; "
+        "with eq 19's r they are not. The implementation uses V_rti / V_rni.",
+        "\\mu_{tC} = \\frac{\\eta_t \\mu_{zC0} + \\mu_{tC0}}{1 - \\eta_t \\eta_z}, \\quad "
+        "\\mu_{zC} = \\frac{\\eta_z \\mu_{tC0} + \\mu_{zC0}}{1 - \\eta_t \\eta_z}",
+        {{velocity,
+          velocity_latex,
+          true,
+          {Auditor::compare("mu_tC", paper::eq27_t(r_velocity), c.brach_both_t),
+           Auditor::compare("mu_zC", paper::eq27_z(r_velocity), c.brach_both_z)}},
+         {on_plane,
+          on_plane_latex,
+          false,
+          {Auditor::compare("mu_tC", paper::eq27_t(r_plane), c.brach_both_t, angles),
+           Auditor::compare("mu_zC", paper::eq27_z(r_plane), c.brach_both_z, angles)}}}));
   }
   {
     // An impulse of azimuth n_i and elevation n_z in world axes, z up; the contact normal horizontal at yaw
@@ -257,7 +233,7 @@ void audit_equations(std::vector<AuditEntry>& out, const Derivation& d, const Cl
         "the world's horizontal plane and psi_o the contact normal's, both from world x toward world y; n_z is the "
         "impulse's elevation above the horizontal; the contact plane is vertical with t = z x n horizontal and z up "
         "(this project's axes). Then P_t = |P| cos n_z sin(n_i - psi_o) and P_z = |P| sin n_z.",
-        {Auditor::compare("P_z / P_t", paper::eq29(), P_z / P_t, angles)}, paper::eq29()));
+        {Auditor::compare("P_z / P_t", paper::eq29(), P_z / P_t, angles)}, tex(paper::eq29())));
   }
 }
 

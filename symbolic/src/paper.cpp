@@ -1,5 +1,7 @@
 #include "paper.hpp"
 
+#include <functional>
+
 namespace impact3d::symbolic::paper {
 
 using namespace GiNaC;
@@ -43,40 +45,33 @@ matrix eq8(const Derivation& d) {
   return sum.mul_scalar(-1);
 }
 
-matrix eq9() {
+namespace {
+// A column of the three rows i = 1, 2, 3 of a printed equation, given row i's right-hand side in terms of
+// the names a_i, b_i, c_i.
+matrix rows(const std::function<ex(const ex& a, const ex& b, const ex& c)>& row) {
   matrix out(3, 1);
   for (int i = 1; i <= 3; ++i) {
     const std::string n = std::to_string(i);
-    out(i - 1, 0) = -(sym("a" + n) * S("Pn") + sym("b" + n) * S("Pt") + sym("c" + n) * S("Pz"));
+    out(i - 1, 0) = row(sym("a" + n), sym("b" + n), sym("c" + n));
   }
   return out;
+}
+}  // namespace
+
+matrix eq9() {
+  return rows([](const ex& a, const ex& b, const ex& c) { return -(a * S("Pn") + b * S("Pt") + c * S("Pz")); });
 }
 
 matrix eq17_middle() {
-  matrix out(3, 1);
-  for (int i = 1; i <= 3; ++i) {
-    const std::string n = std::to_string(i);
-    out(i - 1, 0) = -(sym("a" + n) * S("Pn") + sym("b" + n) * S("Pcp"));
-  }
-  return out;
+  return rows([](const ex& a, const ex& b, const ex&) { return -(a * S("Pn") + b * S("Pcp")); });
 }
 
 matrix eq17_right() {
-  matrix out(3, 1);
-  for (int i = 1; i <= 3; ++i) {
-    const std::string n = std::to_string(i);
-    out(i - 1, 0) = -(sym("a" + n) + S("mu") * sym("b" + n)) * S("Pn");
-  }
-  return out;
+  return rows([](const ex& a, const ex& b, const ex&) { return -(a + S("mu") * b) * S("Pn"); });
 }
 
 matrix eq23() {
-  matrix out(3, 1);
-  for (int i = 1; i <= 3; ++i) {
-    const std::string n = std::to_string(i);
-    out(i - 1, 0) = -(sym("a" + n) + sym("b" + n) * S("mut") + sym("c" + n) * S("muz")) * S("Pn");
-  }
-  return out;
+  return rows([](const ex& a, const ex& b, const ex& c) { return -(a + b * S("mut") + c * S("muz")) * S("Pn"); });
 }
 
 matrix eqs10_12() {

@@ -1,5 +1,6 @@
 #include "compare_diagnosis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -71,59 +72,52 @@ std::optional<std::string> other_vehicle(const std::string& leaf) {
 std::vector<std::string> diagnose(const std::vector<NumericFailure>& failures) {
   std::vector<std::string> out;
   const std::size_t n = failures.size();
-  if (n == 0) return out;
-  auto count = [&](const std::function<bool(const NumericFailure&)>& explained, std::map<std::string, int>& by_group) {
-    std::size_t k = 0;
+  // The failures a cause explains, by quantity; it is named when it explains more than half of them.
+  struct Tally {
+    std::size_t count = 0;
+    std::map<std::string, int> by_group;
+  };
+  const auto tally = [&](const std::function<bool(const NumericFailure&)>& explained) {
+    Tally t;
     for (const auto& f : failures)
       if (explained(f)) {
-        ++k;
-        ++by_group[group(f.leaf)];
+        ++t.count;
+        ++t.by_group[group(f.leaf)];
       }
-    return k;
+    return t;
   };
+  const auto most = [&](const Tally& t) { return 2 * t.count > n; };
+
   // A value within atol of zero has no sign and no unit to speak of.
-  auto signed_value = [](const NumericFailure& f) { return std::fabs(f.reference) > f.atol; };
-
-  std::map<std::string, int> negated_groups;
-  const std::size_t negated = count(
-      [&](const NumericFailure& f) { return signed_value(f) && close(-f.reference, f.other, f.rtol, f.atol); }, negated_groups);
-  if (2 * negated > n)
-    out.push_back(fmt::format(
-        "diagnosis: {} of {} failing numbers are the reference negated ({}): the other tool may use the opposite sign "
-        "convention. Here the normal n points into vehicle 1, P is the impulse on vehicle 1, and the relative velocity "
-        "is vehicle 2's minus vehicle 1's at the impulse centre (docs/case-format.md).",
-        negated, n, groups(negated_groups)));
-
-  // Vehicles numbered the other way exchange the vehicles' fields, and negate the impulse on vehicle 1
-  // and the relative velocity: both count, once some vehicle field is seen exchanged.
-  std::map<std::string, int> swapped_groups;
-  const auto swapped_vehicle = [&](const NumericFailure& f) {
+  const auto signed_value = [](const NumericFailure& f) { return std::fabs(f.reference) > f.atol; };
+  const auto negated = [&](const NumericFailure& f) { return signed_value(f) && close(-f.reference, f.other, f.rtol, f.atol); };
+  const auto other_vehicles_value = [&](const NumericFailure& f) {
     const auto swapped = other_vehicle(f.leaf);
     if (!swapped || !f.result_numbers) return false;
     const auto it = f.result_numbers->find(*swapped);
     return it != f.result_numbers->end() && close(it->second, f.other, f.rtol, f.atol);
   };
-  const std::size_t swapped = count(swapped_vehicle, swapped_groups);
-  std::map<std::string, int> exchanged_groups;
-  const std::size_t exchanged =
-      swapped == 0 ? 0
-                   : count(
-                         [&](const NumericFailure& f) {
-                           if (other_vehicle(f.leaf)) return swapped_vehicle(f);
-                           return signed_value(f) && close(-f.reference, f.other, f.rtol, f.atol);
-                         },
-                         exchanged_groups);
-  if (2 * exchanged > n)
-    out.push_back(fmt::format(
-        "diagnosis: {} of {} failing numbers are what numbering the vehicles the other way gives: the other vehicle's "
-        "values, or the impulse and relative velocity negated ({}). Here vehicle 1 is the one the normal points into "
-        "(docs/case-format.md).",
-        exchanged, n, groups(exchanged_groups)));
 
-  std::map<std::string, int> unit_groups;
+  if (const Tally t = tally(negated); most(t))
+    out.push_back(fmt::format(
+        "diagnosis: {} of {} failing numbers are the reference negated ({}): the other tool may use the opposite sign "
+        "convention. Here the normal n points into vehicle 1, P is the impulse on vehicle 1, and the relative velocity "
+        "is vehicle 2's minus vehicle 1's at the impulse centre (docs/case-format.md).",
+        t.count, n, groups(t.by_group)));
+
+  // Vehicles numbered the other way exchange the vehicles' fields, and negate the impulse on vehicle 1
+  // and the relative velocity: both count, once some vehicle field is seen exchanged.
+  if (std::any_of(failures.begin(), failures.end(), other_vehicles_value))
+    if (const Tally t = tally([&](const NumericFailure& f) { return other_vehicle(f.leaf) ? other_vehicles_value(f) : negated(f); });
+        most(t))
+      out.push_back(fmt::format(
+          "diagnosis: {} of {} failing numbers are what numbering the vehicles the other way gives: the other vehicle's "
+          "values, or the impulse and relative velocity negated ({}). Here vehicle 1 is the one the normal points into "
+          "(docs/case-format.md).",
+          t.count, n, groups(t.by_group)));
+
   std::map<std::string, int> by_factor;
-  const std::size_t scaled = count(
-      [&](const NumericFailure& f) {
+  if (const Tally t = tally([&](const NumericFailure& f) {
         if (!signed_value(f)) return false;
         for (const auto& u : unit_factors())
           if (close(u.factor * f.reference, f.other, f.rtol, f.atol)) {
@@ -131,15 +125,14 @@ std::vector<std::string> diagnose(const std::vector<NumericFailure>& failures) {
             return true;
           }
         return false;
-      },
-      unit_groups);
-  if (2 * scaled > n) {
+      });
+      most(t)) {
     std::string factors;
     for (const auto& [what, k] : by_factor) factors += fmt::format("{}{}: {}", factors.empty() ? "" : "; ", what, k);
     out.push_back(fmt::format(
         "diagnosis: {} of {} failing numbers differ from the reference by a unit factor ({}; by quantity: {}): the other "
         "tool may write other units. The reference is in its case's units (docs/case-format.md).",
-        scaled, n, factors, groups(unit_groups)));
+        t.count, n, factors, groups(t.by_group)));
   }
   return out;
 }

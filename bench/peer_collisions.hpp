@@ -1,0 +1,63 @@
+// The collisions the peers (bench/naive/) are timed on in bench_peers.cpp and held to impact3d on in
+// tests/check_naive_peers.cpp: seeded random raw parameters, and the scene impact3d builds from them.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/rotation.hpp"
+#include "naive/pc_crash.hpp"
+
+namespace impact3d::bench {
+
+inline Scene<double> scene_of(const NaiveCase& c) {
+  Scene<double> s;
+  for (int i = 0; i < 2; ++i) {
+    const NaiveVehicle& v = c.veh[i];
+    RigidBody<double>& b = s.body[i];
+    b.mass = v.mass;
+    for (int p = 0; p < 3; ++p) {
+      for (int q = 0; q < 3; ++q) b.J_B(p, q) = v.J[p][q];
+      b.v_W[p] = v.v[p];
+      b.w_B[p] = v.w[p];
+      b.p_CgIc_B[p] = v.r[p];
+    }
+    b.R_WB = rotation_zyx_deg(v.yaw, v.pitch, v.roll);
+  }
+  s.R_WC = rotation_zyx_deg(c.normal_yaw, c.normal_pitch, c.tangent_roll);
+  s.restitution = c.restitution;
+  return s;
+}
+
+// Approaching collisions (V_rn > 1 m/s): full inertia tensors (principal moments turned by up to 15
+// degrees), yawed, pitched and rolled vehicles, a tilted and rolled contact frame, eps in [0, 1] and mu in
+// [0.05, 1.5], so that both pc-crash regimes occur.
+inline std::vector<NaiveCase> random_collisions(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 g(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  auto in = [&](double a, double b) { return a + (b - a) * u(g); };
+  std::vector<NaiveCase> out;
+  while (out.size() < n) {
+    NaiveCase c{};
+    for (NaiveVehicle& v : c.veh) {
+      v.mass = in(700, 3500);
+      const double ixx = in(300, 1500), iyy = in(1200, 6000), izz = iyy + in(0.5, 1.0) * ixx;
+      const Mat3<double> Q = rotation_zyx_deg(in(-15, 15), in(-15, 15), in(-15, 15));
+      const Mat3<double> J = Q * Eigen::Vector3d(ixx, iyy, izz).asDiagonal() * Q.transpose();
+      for (int p = 0; p < 3; ++p)
+        for (int q = 0; q < 3; ++q) v.J[p][q] = (J(p, q) + J(q, p)) / 2;
+      v.yaw = in(-180, 180), v.pitch = in(-12, 12), v.roll = in(-12, 12);
+      const double v_max[3] = {25, 25, 1}, w_max[3] = {0.3, 0.3, 1.5}, r_lo[3] = {-2.6, -1.0, -0.5}, r_hi[3] = {2.6, 1.0, 0.4};
+      for (int p = 0; p < 3; ++p) v.v[p] = in(-v_max[p], v_max[p]), v.w[p] = in(-w_max[p], w_max[p]), v.r[p] = in(r_lo[p], r_hi[p]);
+    }
+    c.normal_yaw = in(-180, 180), c.normal_pitch = in(-25, 25), c.tangent_roll = in(-30, 30);
+    c.restitution = u(g);
+    c.mu = in(0.05, 1.5);
+    if (relative_velocity_C(scene_of(c)).x() > 1.0) out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace impact3d::bench
