@@ -1,11 +1,15 @@
 // pc-crash from raw parameters (angles, full tensors, velocities, impulse centres) to the impulse, side by
-// side in one run: impact3d's analyze and the naive scalar peer (bench/naive/pc_crash.hpp), on the same
-// seeded random approaching collisions. tests/check_naive_peers.cpp holds the peer to impact3d.
+// side in one run: impact3d's SIMD batches (each instruction set this CPU runs), its scalar lean path
+// (impulse only, and with the post-impact velocities; both engines), analyze, and the naive scalar peer
+// (bench/naive/pc_crash.hpp), on the same seeded random approaching collisions.
+// tests/check_naive_peers.cpp holds the peer to impact3d, tests/check_batch.cpp the batches to the lean
+// path, tests/check_lean.cpp the lean path to analyze.
 #include <benchmark/benchmark.h>
 
 #include <vector>
 
 #include "impact3d/numeric/analysis.hpp"
+#include "impact3d/numeric/batch/columns.hpp"
 #include "peer_collisions.hpp"
 
 using namespace impact3d;
@@ -37,8 +41,55 @@ void pc_crash_analyze(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * cs.size()));
 }
 
+const std::vector<RawCollision<double>>& raw_cases() {
+  static const std::vector<RawCollision<double>> all = [] {
+    std::vector<RawCollision<double>> out;
+    for (const auto& c : cases()) out.push_back(bench::raw_of(c));
+    return out;
+  }();
+  return all;
+}
+
+template <Engine E, Want W>
+void pc_crash_lean(benchmark::State& state) {
+  const auto& cs = cases();
+  const auto& raw = raw_cases();
+  for (auto _ : state)
+    for (std::size_t k = 0; k < raw.size(); ++k)
+      benchmark::DoNotOptimize(solve_lean(scene_of(raw[k]), Strategy<double>(PcCrash<double>{cs[k].mu}), W, E));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
+}
+
+// The same collisions as columns, solved on the lanes of one instruction set (the argument's index into
+// batch::simd_available(), widest first).
+void pc_crash_simd(benchmark::State& state) {
+  const auto sets = batch::simd_available();
+  const auto set = static_cast<std::size_t>(state.range(0));
+  if (set >= sets.size() || !batch::use_simd(sets[set])) {
+    state.SkipWithError("instruction set not available on this CPU");
+    return;
+  }
+  state.SetLabel(sets[set]);
+  const auto& cs = cases();
+  batch::CollisionTable table(cs.size());
+  for (std::size_t k = 0; k < cs.size(); ++k) table.set(k, raw_cases()[k], cs[k].mu);
+  batch::ImpulseTable out(cs.size());
+  const batch::CollisionColumns in = table.columns();
+  const batch::ImpulseColumns o = out.columns();
+  for (auto _ : state) {
+    batch::pc_crash_columns(in, o, 0, cs.size());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * cs.size()));
+  batch::use_simd(sets[0]);
+}
+
 }  // namespace
 
+BENCHMARK(pc_crash_simd)->DenseRange(0, 2);
+BENCHMARK(pc_crash_lean<Engine::generated, Want::impulse>);
+BENCHMARK(pc_crash_lean<Engine::direct, Want::impulse>);
+BENCHMARK(pc_crash_lean<Engine::generated, Want::velocities>);
 BENCHMARK(pc_crash_naive);
 BENCHMARK(pc_crash_analyze<Engine::generated>);
 BENCHMARK(pc_crash_analyze<Engine::direct>);

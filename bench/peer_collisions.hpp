@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/raw_collision.hpp"
 #include "impact3d/numeric/rotation.hpp"
 #include "naive/pc_crash.hpp"
 
@@ -29,6 +30,24 @@ inline Scene<double> scene_of(const NaiveCase& c) {
   s.R_WC = rotation_zyx_deg(c.normal_yaw, c.normal_pitch, c.tangent_roll);
   s.restitution = c.restitution;
   return s;
+}
+
+// The same raw parameters as impact3d's RawCollision, for the lean path and the batches.
+inline RawCollision<double> raw_of(const NaiveCase& c) {
+  RawCollision<double> r;
+  for (int i = 0; i < 2; ++i) {
+    const NaiveVehicle& v = c.veh[i];
+    RawVehicle<double>& w = r.vehicle[i];
+    w.mass = v.mass;
+    for (int p = 0; p < 3; ++p) {
+      for (int q = 0; q < 3; ++q) w.J_B(p, q) = v.J[p][q];
+      w.v_W(p) = v.v[p], w.w_B(p) = v.w[p], w.p_CgIc_B(p) = v.r[p];
+    }
+    w.yaw_deg = v.yaw, w.pitch_deg = v.pitch, w.roll_deg = v.roll;
+  }
+  r.normal_yaw_deg = c.normal_yaw, r.normal_pitch_deg = c.normal_pitch, r.tangent_roll_deg = c.tangent_roll;
+  r.restitution = c.restitution;
+  return r;
 }
 
 // Approaching collisions (V_rn > 1 m/s): full inertia tensors (principal moments turned by up to 15

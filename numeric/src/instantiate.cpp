@@ -6,4 +6,6 @@ namespace impact3d {
 using InstantiatedScalar = ScalarAt<IMPACT3D_SCALAR_INDEX>;
 template Analysis<InstantiatedScalar> analyze(const Scene<InstantiatedScalar>&,
                                               const std::vector<Strategy<InstantiatedScalar>>&, Engine);
+template LeanSolution<InstantiatedScalar> solve_lean(const Scene<InstantiatedScalar>&, const Strategy<InstantiatedScalar>&,
+                                                     Want, Engine);
 }  // namespace impact3d

@@ -5,16 +5,10 @@
 #include <Eigen/Eigenvalues>
 #include <vector>
 
-#include "impact3d/numeric/direct/engine.hpp"
-#include "impact3d/numeric/generated_engine.hpp"
 #include "impact3d/numeric/impulse_space.hpp"
-#include "impact3d/numeric/post_impact.hpp"
-#include "impact3d/numeric/precision_warnings.hpp"
+#include "impact3d/numeric/lean.hpp"
 #include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/scalars.hpp"
-#include "impact3d/numeric/strategies/brach.hpp"
-#include "impact3d/numeric/strategies/pc_crash.hpp"
-#include "impact3d/numeric/strategies/wach.hpp"
 
 namespace impact3d {
 
@@ -36,25 +30,12 @@ bool case_finite(const Analysis<Scalar>& a) {
          is_finite(a.space.restitution_offset);
 }
 
-template <typename E, typename Scalar>
-Problem<Scalar> make_problem(const Scene<Scalar>& s) {
-  Problem<Scalar> p;
-  p.m_prime = reduced_mass(s);
-  p.K = E::coefficient_matrix(s);
-  p.V_ri = relative_velocity_C(s);
-  p.restitution = s.restitution;
-  // K is symmetric positive definite (I plus Gram-type terms), so its eigenvalues give the condition;
-  // infinite where rounding made it indefinite. Exact arithmetic has no rounding for it to amplify.
-  p.kappa = rounding::spd_condition(p.K);
-  p.amplification = rounding::amplification(s, p.kappa);
-  return p;
-}
-
+// A strategy's impulse, with its warnings' text; throws SolveError for a singular constraint system.
 template <typename E, typename Scalar>
 ImpulseSolution<Scalar> solve_impulse(const Problem<Scalar>& p, const Strategy<Scalar>& st) {
-  if (auto* pc = std::get_if<PcCrash<Scalar>>(&st)) return strategies::pc_crash<E>(p, *pc);
-  if (auto* w = std::get_if<Wach<Scalar>>(&st)) return strategies::wach<E>(p, *w);
-  return strategies::brach<E>(p, std::get<Brach<Scalar>>(st));
+  ImpulseSolution<Scalar> out;
+  if (const Singular f = solve_strategy<E>(p, st, out)) throw E::singular(f.what);
+  return out;
 }
 
 template <typename E, typename Scalar>

@@ -1,6 +1,7 @@
 // The generated engine: the adapter between the library's types and the kernels that symbolic/ derives
 // and writes into generated/ (do not edit those; regenerate). A closed form divides where the direct
-// engine's 3x3 system is singular; a non-finite result is reported the same way, as a SolveError.
+// engine's 3x3 system is singular: each primitive returns nothing for a non-finite result, and its
+// throwing form (for the figures and the tools) a SolveError naming the constraint.
 #pragma once
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include "impact3d/generated/coefficient_matrix.hpp"
 #include "impact3d/generated/full_impact.hpp"
 #include "impact3d/generated/solution_plane.hpp"
+#include "impact3d/numeric/engine_primitives.hpp"
 #include "impact3d/numeric/exact.hpp"
 #include "impact3d/numeric/kinematics.hpp"
 #include "impact3d/numeric/problem.hpp"
@@ -18,30 +20,31 @@
 
 namespace impact3d {
 
-struct GeneratedEngine {
+struct GeneratedEngine : EnginePrimitives<GeneratedEngine> {
+  static constexpr const char* singular_reason = "a closed form divides by zero";
+
   template <typename Scalar>
   static Mat3<Scalar> coefficient_matrix(const Scene<Scalar>& s) {
     return generated::coefficient_matrix(reduced_mass(s), s.body[0].J_B, s.body[1].J_B, s.body[0].p_CgIc_B,
                                          s.body[1].p_CgIc_B, R_CB(s, 0), R_CB(s, 1));
   }
   template <typename Scalar>
-  static Vec3<Scalar> full_impact(const Problem<Scalar>& p, const Scalar& eps) {
-    return finite(generated::full_impact(p.K, p.m_prime, eps, p.V_ri), "full impact");
+  static std::optional<Vec3<Scalar>> try_full_impact(const Problem<Scalar>& p, const Scalar& eps) {
+    return finite(generated::full_impact(p.K, p.m_prime, eps, p.V_ri));
   }
   template <typename Scalar>
-  static Scalar plane_ratio(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& eps, const std::string& what) {
-    const Scalar mu = eps == Scalar(0) ? generated::plane_generalized_ratio(p.K, p.V_ri, ax.c, ax.s)
-                                       : generated::plane_critical_ratio(p.K, eps, p.V_ri, ax.c, ax.s);
-    return finite(mu, what);
+  static std::optional<Scalar> try_plane_ratio(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& eps) {
+    return finite(eps == Scalar(0) ? generated::plane_generalized_ratio(p.K, p.V_ri, ax.c, ax.s)
+                                   : generated::plane_critical_ratio(p.K, eps, p.V_ri, ax.c, ax.s));
   }
   template <typename Scalar>
-  static Vec3<Scalar> plane_impulse(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& mu,
-                                    const std::string& what) {
-    return finite(generated::plane_impulse(p.K, p.m_prime, p.restitution, p.V_ri, ax.c, ax.s, mu), what);
+  static std::optional<Vec3<Scalar>> try_plane_impulse(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax,
+                                                       const Scalar& mu) {
+    return finite(generated::plane_impulse(p.K, p.m_prime, p.restitution, p.V_ri, ax.c, ax.s, mu));
   }
   template <typename Scalar>
-  static Vec3<Scalar> brach_impulse(const Problem<Scalar>& p, const std::optional<Scalar>& mu_t,
-                                    const std::optional<Scalar>& mu_z, const std::string& what) {
+  static std::optional<Vec3<Scalar>> try_brach_impulse(const Problem<Scalar>& p, const std::optional<Scalar>& mu_t,
+                                                       const std::optional<Scalar>& mu_z) {
     Scalar t, z;
     if (mu_t && mu_z) {
       t = *mu_t;
@@ -57,18 +60,19 @@ struct GeneratedEngine {
       t = both(0);
       z = both(1);
     }
-    return finite(generated::brach_impulse(p.K, p.m_prime, p.restitution, p.V_ri, finite(t, what), finite(z, what)), what);
+    if (!is_finite(t) || !is_finite(z)) return std::nullopt;
+    return finite(generated::brach_impulse(p.K, p.m_prime, p.restitution, p.V_ri, t, z));
   }
 
  private:
   template <typename Scalar>
-  static Scalar finite(const Scalar& x, const std::string& what) {
-    if (!is_finite(x)) throw SolveError(what + ": the constraints admit no unique impulse (a closed form divides by zero)");
+  static std::optional<Scalar> finite(const Scalar& x) {
+    if (!is_finite(x)) return std::nullopt;
     return x;
   }
   template <typename Scalar>
-  static Vec3<Scalar> finite(const Vec3<Scalar>& v, const std::string& what) {
-    for (int i = 0; i < 3; ++i) finite(v(i), what);
+  static std::optional<Vec3<Scalar>> finite(const Vec3<Scalar>& v) {
+    if (!all_finite(v)) return std::nullopt;
     return v;
   }
 };

@@ -26,6 +26,18 @@ bool solution_finite(const Solution<Scalar>& s) {
   return ok;
 }
 
+// The relative rounding bound of a solution: kResultRoundings eps A (1 + |V_cp / V_n|).
+template <typename Scalar>
+Scalar rounding_bound_of(const Scalar& amplification, const Vec3<Scalar>& V_ri) {
+  return rounding::relative_bound(Scalar(amplification * rounding::quotient_factor(V_ri)));
+}
+
+// Whether a rounding bound is within the trusted fraction (a NaN is not).
+template <typename Scalar>
+bool trusted(const Scalar& bound) {
+  return static_cast<double>(bound) <= rounding::kTrustedFraction;
+}
+
 // `amplification`: the problem's (rounding.hpp). Ratios carry their quotient's factor 1 + |V_cp / V_n|
 // besides, so the check uses the larger of the two.
 template <typename Scalar>
@@ -36,10 +48,10 @@ void flag_precision(Solution<Scalar>& s, const Scalar& amplification) {
                             "not finite: a result is NaN or infinite at this precision (printed as null in JSON); "
                             "it cannot be trusted"});
     const Scalar quotient = rounding::quotient_factor(s.V_ri);
-    s.rounding_bound = rounding::relative_bound(Scalar(amplification * quotient));
+    s.rounding_bound = rounding_bound_of(amplification, s.V_ri);
     const double a = static_cast<double>(Scalar(amplification * quotient));
     const double bound = static_cast<double>(s.rounding_bound);
-    if (bound <= rounding::kTrustedFraction) return;
+    if (trusted(s.rounding_bound)) return;
     std::ostringstream text;
     text.precision(2);
     text << "rounding: the impulse, its ratios and everything computed from them may be off by up to " << bound

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "impact3d/numeric/rounding.hpp"
+#include "impact3d/numeric/scene.hpp"
 #include "impact3d/numeric/strategy.hpp"
 #include "impact3d/numeric/types.hpp"
 
@@ -23,22 +24,72 @@ struct Problem {
   Mat3<Scalar> K;
   Vec3<Scalar> V_ri;  // contact axes
   Scalar restitution;
-  Scalar kappa;       // 2-norm condition number of K
-  Scalar amplification = Scalar(1);  // of the inputs' rounding into the impulse (rounding.hpp)
+  // The 2-norm condition number of K and the amplification of the inputs' rounding into the impulse
+  // (rounding.hpp). analyze computes them at once, since it prints them. The lean path (lean.hpp) starts
+  // from their cheap upper bounds and computes them, by settle(), only when a decision falls within the
+  // bound: until then `unsettled` points at the scene and the two are not yet set.
+  mutable Scalar kappa;
+  mutable Scalar amplification = Scalar(1);
+  Scalar kappa_bound, amplification_bound;  // >= kappa and amplification
+  mutable const Scene<Scalar>* unsettled = nullptr;
+
+  void settle() const {
+    if (!unsettled) return;
+    kappa = rounding::spd_condition(K);
+    amplification = rounding::amplification(*unsettled, kappa);
+    unsettled = nullptr;
+  }
+
+  // Whether |x| <= limit(kappa or amplification), deciding on the bound when it is far from the limit (the
+  // bound doubled against the rounding of the two estimates) and on the settled value otherwise.
+  template <typename Limit>
+  bool within(const Scalar& x, Limit&& limit, bool of_kappa) const {
+    using std::abs;
+    if (unsettled && abs(x) > Scalar(2) * limit(of_kappa ? kappa_bound : amplification_bound)) return false;
+    settle();
+    return abs(x) <= limit(of_kappa ? kappa : amplification);
+  }
 
   // A direction computed from a 3x3 solve is noise once its magnitude is below the solve's forward
   // error (rounding::solve_roundoff).
   bool negligible(const Scalar& x, const Scalar& scale) const {
-    using std::abs;
     if constexpr (std::numeric_limits<Scalar>::is_exact) return x == Scalar(0);
-    else return abs(x) <= rounding::solve_roundoff(kappa, scale);
+    else return within(x, [&](const Scalar& k) { return rounding::solve_roundoff(k, scale); }, true);
   }
 };
 
+// m', K (by the engine E), V_ri and the restitution; the conditioning computed (analyze) or bounded (the
+// lean path, which must keep `s` alive while it solves).
+template <typename E, typename Scalar>
+Problem<Scalar> make_problem(const Scene<Scalar>& s, bool bounded = false) {
+  Problem<Scalar> p;
+  p.m_prime = reduced_mass(s);
+  p.K = E::coefficient_matrix(s);
+  p.V_ri = relative_velocity_C(s);
+  p.restitution = s.restitution;
+  if (bounded && !is_exact_v<Scalar>) {
+    p.kappa_bound = rounding::spd_condition_bound(p.K);
+    p.amplification_bound = rounding::amplification_bound(s, p.kappa_bound);
+    p.kappa = p.amplification = std::numeric_limits<Scalar>::quiet_NaN();
+    p.unsettled = &s;
+  } else {
+    // K is symmetric positive definite (I plus Gram-type terms), so its eigenvalues give the condition;
+    // infinite where rounding made it indefinite. Exact arithmetic has no rounding for it to amplify.
+    p.kappa = p.kappa_bound = rounding::spd_condition(p.K);
+    p.amplification = p.amplification_bound = rounding::amplification(s, p.kappa);
+  }
+  return p;
+}
+
 // The bodies approach at the impulse centre (V_rn > 0), or there is no impact to solve.
 template <typename Scalar>
+bool approaching(const Problem<Scalar>& p) {
+  return p.V_ri.x() > Scalar(0);
+}
+
+template <typename Scalar>
 void require_approaching(const Problem<Scalar>& p) {
-  if (!(p.V_ri.x() > Scalar(0))) throw SolveError("the bodies are not approaching at the impulse centre (V_rn <= 0)");
+  if (!approaching(p)) throw SolveError("the bodies are not approaching at the impulse centre (V_rn <= 0)");
 }
 
 }  // namespace impact3d

@@ -73,6 +73,20 @@ Mat3<Scalar> rotation_zyx_deg(const Scalar& yaw, const Scalar& pitch, const Scal
   return rot_z(sin_cos_deg(yaw)) * rot_y(sin_cos_deg(pitch)) * rot_x(sin_cos_deg(roll));
 }
 
+// The same rotation in closed form, a third of the operations, for the lean path and batches
+// (raw_collision.hpp). Its entries equal rotation_zyx_deg's bit for bit but for the sign of some zeros
+// (the product adds zero terms that this form leaves out; tests/check_rotation.cpp).
+template <typename Scalar>
+Mat3<Scalar> rotation_zyx_deg_closed(const Scalar& yaw, const Scalar& pitch, const Scalar& roll) {
+  const SinCos<Scalar> z = sin_cos_deg(yaw), y = sin_cos_deg(pitch), x = sin_cos_deg(roll);
+  const Scalar zc_ys = z.c * y.s, zs_ys = z.s * y.s;
+  Mat3<Scalar> r;
+  r << z.c * y.c, -z.s * x.c + zc_ys * x.s, z.s * x.s + zc_ys * x.c,  //
+      z.s * y.c, z.c * x.c + zs_ys * x.s, -z.c * x.s + zs_ys * x.c,   //
+      -y.s, y.c * x.s, y.c * x.c;
+  return r;
+}
+
 // Contact frame from a normal and a tangent given in world axes: n normalised, t made orthogonal to n
 // (Gram-Schmidt) and normalised, z = n x t. Columns of the result are n, t, z. The caller has checked
 // that n is non-zero and t is not parallel to n.

@@ -8,8 +8,8 @@
 // of scalars.hpp); a "rounding" is one operation's relative error, at most eps, and the factors below
 // count roundings.
 //
-//   Results       kResultRoundings, kTrustedFraction, spd_condition, amplification, quotient_factor,
-//                 relative_bound, agreement_bound, precision_for
+//   Results       kResultRoundings, kTrustedFraction, spd_condition, spd_condition_bound, amplification,
+//                 amplification_bound, quotient_factor, relative_bound, agreement_bound, precision_for
 //   Solves        kSolveRoundings, solve_roundoff, velocity_scale, velocity_roundoff, energy_roundoff
 //   Short sums    kArithmeticRoundings, arithmetic_roundoff, pdof_roundoff
 //   Inputs        kParallelRoundings, parallel_within_rounding, kOrthonormalDigits, orthonormality_tolerance
@@ -63,19 +63,55 @@ Scalar spd_condition(const Mat3<Scalar>& M) {
   }
 }
 
-// The amplification A above; exact arithmetic has nothing to amplify.
+// An upper bound of spd_condition without eigenvalues, for the lean path: ||M||_F ||M^-1||_F, at least
+// lambda_max / lambda_min and at most three times it, M^-1 by its adjugate; infinity where M fails
+// Sylvester's test (a leading minor not positive), as spd_condition is where M is indefinite.
 template <typename Scalar>
-Scalar amplification(const Scene<Scalar>& s, const Scalar& kappa_K) {
+Scalar spd_condition_bound(const Mat3<Scalar>& M) {
+  if constexpr (is_exact_v<Scalar>) {
+    return Scalar(1);
+  } else {
+    using std::sqrt;
+    const Scalar a = M(0, 0), b = M(0, 1), c = M(0, 2), d = M(1, 1), e = M(1, 2), f = M(2, 2);
+    const Scalar A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;  // first column of the adjugate
+    const Scalar D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
+    const Scalar det = a * A + b * B + c * C;
+    if (!(a > Scalar(0)) || !(F > Scalar(0)) || !(det > Scalar(0))) return std::numeric_limits<Scalar>::infinity();
+    const Scalar norm2 = a * a + d * d + f * f + Scalar(2) * (b * b + c * c + e * e);
+    const Scalar inverse2 = (A * A + D * D + F * F + Scalar(2) * (B * B + C * C + E * E)) / (det * det);
+    const Scalar k = sqrt(norm2 * inverse2);
+    return is_finite(k) ? k : std::numeric_limits<Scalar>::infinity();
+  }
+}
+
+// The amplification A above from the conditions of K and of the inertia tensors (computed or bounded);
+// infinite where either is, or where the bodies do not approach.
+template <typename Scalar>
+Scalar amplification_of(const Scene<Scalar>& s, const Scalar& kappa_K, const Scalar& cond_J) {
   if constexpr (is_exact_v<Scalar>) {
     return Scalar(1);
   } else {
     using std::max;
-    const Scalar cond_J = max(spd_condition(s.body[0].J_B), spd_condition(s.body[1].J_B));
     const Scalar V_rn = relative_velocity_C(s).x();
     const Scalar cancellation = max(Scalar(1), Scalar((v_Ic_W(s.body[0]).norm() + v_Ic_W(s.body[1]).norm()) / V_rn));
     const Scalar a = kappa_K * cond_J * cancellation;
     return is_finite(a) && a > Scalar(0) ? a : std::numeric_limits<Scalar>::infinity();
   }
+}
+
+// The amplification A above; exact arithmetic has nothing to amplify.
+template <typename Scalar>
+Scalar amplification(const Scene<Scalar>& s, const Scalar& kappa_K) {
+  using std::max;
+  return amplification_of(s, kappa_K, Scalar(max(spd_condition(s.body[0].J_B), spd_condition(s.body[1].J_B))));
+}
+
+// An upper bound of the amplification from spd_condition_bound, for the lean path.
+template <typename Scalar>
+Scalar amplification_bound(const Scene<Scalar>& s, const Scalar& kappa_K_bound) {
+  using std::max;
+  return amplification_of(s, kappa_K_bound,
+                          Scalar(max(spd_condition_bound(s.body[0].J_B), spd_condition_bound(s.body[1].J_B))));
 }
 
 // The quotient's factor of a ratio u.P / P_n, 1 + |V_cp / V_n|: ratios and the decisions taken on them

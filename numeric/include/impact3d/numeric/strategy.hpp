@@ -1,6 +1,7 @@
 // The constraint strategies of the paper, as specified by the user, and what an engine returns for one.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -63,6 +64,13 @@ struct Warning {
   std::string text;
 };
 
+// The warnings of a result as a set of codes: what the lean path (lean.hpp) reports, without text.
+using WarningSet = std::uint16_t;
+
+constexpr WarningSet warning_bit(WarningCode c) { return static_cast<WarningSet>(1u << static_cast<unsigned>(c)); }
+
+constexpr bool has_warning(WarningSet set, WarningCode c) { return (set & warning_bit(c)) != 0; }
+
 // A strategy whose constraints admit no impulse (a singular constraint system). `strategy` is the index
 // of the strategy in the analysis that failed, when one did.
 struct SolveError : std::runtime_error {
@@ -79,7 +87,24 @@ struct ImpulseSolution {
   std::optional<Scalar> gir, cir, mu_t_critical, mu_z_critical;  // limits compared against
   std::optional<PlaneAxes<Scalar>> plane;  // the solution plane used: phi_FI (eq 15) or Wach's phi (eq 21)
   std::optional<Scalar> plane_angle_deg;    // its angle from t towards z
+  WarningSet codes = 0;                     // the codes of `warnings`
+  // The text of each warning, for a report; the lean path solves with `with_text` off and allocates
+  // nothing, and make_text is then never called.
   std::vector<Warning> warnings;
+  bool with_text = true;
+
+  template <typename MakeText>
+  void warn(WarningCode code, MakeText&& make_text) {
+    codes |= warning_bit(code);
+    if (with_text) warnings.push_back({code, std::string(make_text())});
+  }
+};
+
+// A strategy whose constraints admit no unique impulse names the constraint system that was singular;
+// it returns this rather than throwing, so that an ordinary outcome costs no exception on the lean path.
+struct Singular {
+  const char* what = nullptr;  // empty when the strategy solved
+  explicit operator bool() const { return what != nullptr; }
 };
 
 }  // namespace impact3d

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <array>
-#include <string>
+#include <optional>
 
 #include <Eigen/LU>
 
@@ -49,8 +49,9 @@ Row<Scalar> no_impulse_row(const Vec3<Scalar>& w) {
   return {w, Scalar(0)};
 }
 
+// Empty when the system is singular.
 template <typename Scalar>
-Vec3<Scalar> solve_rows(const std::array<Row<Scalar>, 3>& rows, const std::string& what) {
+std::optional<Vec3<Scalar>> solve_rows(const std::array<Row<Scalar>, 3>& rows) {
   Mat3<Scalar> A;
   Vec3<Scalar> b;
   for (int k = 0; k < 3; ++k) {
@@ -58,24 +59,23 @@ Vec3<Scalar> solve_rows(const std::array<Row<Scalar>, 3>& rows, const std::strin
     b(k) = rows[k].rhs;
   }
   Eigen::FullPivLU<Mat3<Scalar>> lu(A);
-  if (!lu.isInvertible()) throw SolveError(what + ": the constraints admit no unique impulse (singular system)");
-  return lu.solve(b);
+  if (!lu.isInvertible()) return std::nullopt;
+  return Vec3<Scalar>(lu.solve(b));
 }
 
 // The ratio u.P / P_n at which sliding along u stops, on the plane (n, u): eq 19 (CIR) for the case's
 // restitution, eq 20 (GIR) for eps = 0.
 template <typename Scalar>
-Scalar plane_critical_ratio(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& eps,
-                            const std::string& what) {
-  const Vec3<Scalar> P = solve_rows<Scalar>({restitution_row(p, eps), no_sliding_row(p, ax.u()), no_impulse_row(ax.w())}, what);
-  return ax.u().dot(P) / P.x();
+std::optional<Scalar> plane_critical_ratio(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& eps) {
+  const auto P = solve_rows<Scalar>({restitution_row(p, eps), no_sliding_row(p, ax.u()), no_impulse_row(ax.w())});
+  if (!P) return std::nullopt;
+  return Scalar(ax.u().dot(*P) / P->x());
 }
 
 // Impulse with ratio mu on the plane (n, u) and none along w (eqs 17-18, 22).
 template <typename Scalar>
-Vec3<Scalar> plane_impulse(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& mu,
-                           const std::string& what) {
-  return solve_rows<Scalar>({restitution_row(p, p.restitution), ratio_row(ax.u(), mu), no_impulse_row(ax.w())}, what);
+std::optional<Vec3<Scalar>> plane_impulse(const Problem<Scalar>& p, const PlaneAxes<Scalar>& ax, const Scalar& mu) {
+  return solve_rows<Scalar>({restitution_row(p, p.restitution), ratio_row(ax.u(), mu), no_impulse_row(ax.w())});
 }
 
 }  // namespace impact3d::direct

@@ -7,12 +7,11 @@
 namespace impact3d::direct {
 
 template <typename Scalar>
-Vec3<Scalar> full_impact_impulse(const Problem<Scalar>& p, const Scalar& eps) {
+std::optional<Vec3<Scalar>> full_impact_impulse(const Problem<Scalar>& p, const Scalar& eps) {
   const Vec3<Scalar> e[3] = {Vec3<Scalar>::UnitX(), Vec3<Scalar>::UnitY(), Vec3<Scalar>::UnitZ()};
   return solve_rows<Scalar>({velocity_row(p, e[0], Scalar(-eps * p.V_ri.x())),
                              velocity_row(p, e[1], Scalar(-eps * p.V_ri.y())),
-                             velocity_row(p, e[2], Scalar(-eps * p.V_ri.z()))},
-                            "full impact");
+                             velocity_row(p, e[2], Scalar(-eps * p.V_ri.z()))});
 }
 
 }  // namespace impact3d::direct

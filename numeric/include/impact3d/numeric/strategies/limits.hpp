@@ -36,11 +36,11 @@ Scalar plane_length(const Scalar& a, const Scalar& b) {
 // angle from t towards z is stored in the solution.
 template <typename Scalar>
 PlaneAxes<Scalar> solution_plane(const Problem<Scalar>& p, const Scalar& d_t, const Scalar& d_z, const Scalar& scale,
-                                 ImpulseSolution<Scalar>& out, const std::string& undefined) {
+                                 ImpulseSolution<Scalar>& out, const char* undefined) {
   const Scalar length = plane_length(d_t, d_z);
   PlaneAxes<Scalar> ax{Scalar(1), Scalar(0)};
   if (p.negligible(length, scale))
-    out.warnings.push_back({WarningCode::plane_undefined, undefined});
+    out.warn(WarningCode::plane_undefined, [&] { return undefined; });
   else
     ax = {Scalar(d_t / length), Scalar(d_z / length)};
   out.plane = ax;
@@ -52,10 +52,11 @@ PlaneAxes<Scalar> solution_plane(const Problem<Scalar>& p, const Scalar& d_t, co
 }
 
 template <typename Scalar>
-void flag_if_not_finite(ImpulseSolution<Scalar>& out, const Scalar& value, const std::string& name) {
+void flag_if_not_finite(ImpulseSolution<Scalar>& out, const Scalar& value, const char* name) {
   if (!is_finite(value))
-    out.warnings.push_back({WarningCode::non_physical_limit,
-                            name + " is undefined: the normal impulse of the solution that defines it is zero"});
+    out.warn(WarningCode::non_physical_limit, [&] {
+      return std::string(name) + " is undefined: the normal impulse of the solution that defines it is zero";
+    });
 }
 
 // A regime decided by mu >= limit is undecided when mu lies within the limit's rounding bound
@@ -64,27 +65,31 @@ void flag_if_not_finite(ImpulseSolution<Scalar>& out, const Scalar& value, const
 // numbers are.
 template <typename Scalar>
 void flag_if_undecided(ImpulseSolution<Scalar>& out, const Problem<Scalar>& p, const Scalar& mu, const Scalar& limit,
-                       const std::string& name) {
+                       const char* name) {
   if constexpr (!is_exact_v<Scalar>) {
     using std::abs;
     if (!is_finite(limit)) return;
-    const Scalar bound = rounding::relative_bound(p.amplification) * rounding::quotient_factor(p.V_ri) * (Scalar(1) + abs(limit));
-    if (abs(mu - limit) <= bound) {
-      std::ostringstream text;
-      text.precision(3);
-      text << "undecided: mu = " << static_cast<double>(mu) << " lies within the rounding bound ("
-           << static_cast<double>(bound) << ") of " << name << " = " << static_cast<double>(limit)
-           << "; a wider precision may take the other regime";
-      out.warnings.push_back({WarningCode::undecided, text.str()});
-    }
+    auto bound = [&](const Scalar& amplification) {
+      return Scalar(rounding::relative_bound(amplification) * rounding::quotient_factor(p.V_ri) * (Scalar(1) + abs(limit)));
+    };
+    if (p.within(Scalar(mu - limit), bound, false))
+      out.warn(WarningCode::undecided, [&] {
+        std::ostringstream text;
+        text.precision(3);
+        text << "undecided: mu = " << static_cast<double>(mu) << " lies within the rounding bound ("
+             << static_cast<double>(bound(p.amplification)) << ") of " << name << " = " << static_cast<double>(limit)
+             << "; a wider precision may take the other regime";
+        return text.str();
+      });
   }
 }
 
 template <typename Scalar>
-void flag_if_negative_ratio(ImpulseSolution<Scalar>& out, const Scalar& mu, const std::string& name) {
+void flag_if_negative_ratio(ImpulseSolution<Scalar>& out, const Scalar& mu, const char* name) {
   if (mu < Scalar(0))
-    out.warnings.push_back({WarningCode::negative_ratio,
-                            name + " used is negative: the contact-plane impulse acts along the initial sliding"});
+    out.warn(WarningCode::negative_ratio, [&] {
+      return std::string(name) + " used is negative: the contact-plane impulse acts along the initial sliding";
+    });
 }
 
 }  // namespace impact3d::strategies

@@ -12,29 +12,33 @@
 
 namespace impact3d::strategies {
 
+// Fills `out`; returns the singular constraint system, if any (then `out` is incomplete).
 template <typename Engine, typename Scalar>
-ImpulseSolution<Scalar> pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec) {
-  ImpulseSolution<Scalar> out;
-  const Vec3<Scalar> P_fi = Engine::full_impact(p, p.restitution);
-  const PlaneAxes<Scalar> ax = solution_plane(p, P_fi.y(), P_fi.z(), magnitude(P_fi), out,
+Singular pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec, ImpulseSolution<Scalar>& out) {
+  const auto P_fi = Engine::try_full_impact(p, p.restitution);
+  if (!P_fi) return {"full impact"};
+  const PlaneAxes<Scalar> ax = solution_plane(p, P_fi->y(), P_fi->z(), magnitude(*P_fi), out,
                                                "phi_FI (eq 15) is undefined: the Full Impact has no contact-plane "
                                                "impulse; the t axis (phi_FI = 0) is used");
-  const Scalar P_cp = plane_length(P_fi.y(), P_fi.z());
-  const Scalar gir = P_cp / P_fi.x();
+  const Scalar P_cp = plane_length(P_fi->y(), P_fi->z());
+  const Scalar gir = P_cp / P_fi->x();
   out.gir = gir;
-  out.cir = Engine::plane_ratio(p, ax, p.restitution, "pc-crash CIR (eq 19)");
+  out.cir = Engine::try_plane_ratio(p, ax, p.restitution);
+  if (!out.cir) return {"pc-crash CIR (eq 19)"};
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
   flag_if_undecided(out, p, spec.mu, gir, "GIR (eq 14)");
   if (spec.mu >= gir) {
     out.regime = Regime::full;
     out.mu = gir;
-    out.P_C = P_fi;
+    out.P_C = *P_fi;
   } else {
     out.regime = Regime::sliding;
     out.mu = spec.mu;
-    out.P_C = Engine::plane_impulse(p, ax, spec.mu, "pc-crash sliding impact (eq 18)");
+    const auto P = Engine::try_plane_impulse(p, ax, spec.mu);
+    if (!P) return {"pc-crash sliding impact (eq 18)"};
+    out.P_C = *P;
   }
-  return out;
+  return {};
 }
 
 }  // namespace impact3d::strategies

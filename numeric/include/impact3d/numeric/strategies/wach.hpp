@@ -7,14 +7,16 @@
 
 namespace impact3d::strategies {
 
+// Fills `out`; returns the singular constraint system, if any (then `out` is incomplete).
 template <typename Engine, typename Scalar>
-ImpulseSolution<Scalar> wach(const Problem<Scalar>& p, const Wach<Scalar>& spec) {
-  ImpulseSolution<Scalar> out;
+Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolution<Scalar>& out) {
   const PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), magnitude(p.V_ri), out,
                                                "phi (eq 21) is undefined: there is no initial sliding velocity; "
                                                "the t axis (phi = 0) is used");
-  out.cir = Engine::plane_ratio(p, ax, p.restitution, "wach CIR (eq 19)");
-  out.gir = Engine::plane_ratio(p, ax, Scalar(0), "wach GIR (eq 20)");
+  out.cir = Engine::try_plane_ratio(p, ax, p.restitution);
+  if (!out.cir) return {"wach CIR (eq 19)"};
+  out.gir = Engine::try_plane_ratio(p, ax, Scalar(0));
+  if (!out.gir) return {"wach GIR (eq 20)"};
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
   flag_if_not_finite(out, *out.gir, "GIR (eq 20)");
   const Scalar limit = spec.limit == WachLimit::cir ? *out.cir : *out.gir;
@@ -23,8 +25,10 @@ ImpulseSolution<Scalar> wach(const Problem<Scalar>& p, const Wach<Scalar>& spec)
   out.regime = capped ? Regime::capped : Regime::sliding;
   out.mu = capped ? limit : spec.mu;
   flag_if_negative_ratio(out, *out.mu, "impulse ratio");
-  out.P_C = Engine::plane_impulse(p, ax, *out.mu, "wach (eqs 18, 22)");
-  return out;
+  const auto P = Engine::try_plane_impulse(p, ax, *out.mu);
+  if (!P) return {"wach (eqs 18, 22)"};
+  out.P_C = *P;
+  return {};
 }
 
 }  // namespace impact3d::strategies

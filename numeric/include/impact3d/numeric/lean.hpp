@@ -1,0 +1,114 @@
+// The lean solve: one strategy of one collision, computing only what the caller wants (the impulse, or
+// the impulse and the post-impact velocities), with no heap allocation and no exception for an ordinary
+// outcome (bodies that do not approach, a singular constraint system): a status instead. The condition
+// of K and the amplification of rounding are bounded cheaply and computed only when a decision falls
+// within the bound (Problem::settle). analyze (analysis.hpp) solves each strategy by the same
+// solve_strategy and decides alike; it adds what only a report needs.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <variant>
+
+#include "impact3d/numeric/direct/engine.hpp"
+#include "impact3d/numeric/generated_engine.hpp"
+#include "impact3d/numeric/post_impact.hpp"
+#include "impact3d/numeric/precision_warnings.hpp"
+#include "impact3d/numeric/scalars.hpp"
+#include "impact3d/numeric/strategies/brach.hpp"
+#include "impact3d/numeric/strategies/pc_crash.hpp"
+#include "impact3d/numeric/strategies/wach.hpp"
+
+namespace impact3d {
+
+// A strategy's impulse into `out`; the singular constraint system, if any.
+template <typename E, typename Scalar>
+Singular solve_strategy(const Problem<Scalar>& p, const Strategy<Scalar>& st, ImpulseSolution<Scalar>& out) {
+  if (auto* pc = std::get_if<PcCrash<Scalar>>(&st)) return strategies::pc_crash<E>(p, *pc, out);
+  if (auto* w = std::get_if<Wach<Scalar>>(&st)) return strategies::wach<E>(p, *w, out);
+  return strategies::brach<E>(p, std::get<Brach<Scalar>>(st), out);
+}
+
+enum class Want : std::uint8_t { impulse, velocities };
+
+enum class Status : std::uint8_t { solved, not_approaching, singular };
+
+inline const char* status_name(Status s) {
+  switch (s) {
+    case Status::solved: return "solved";
+    case Status::not_approaching: return "not approaching";
+    case Status::singular: return "singular";
+  }
+  return "?";
+}
+
+template <typename Scalar>
+struct LeanSolution {
+  Status status = Status::solved;
+  const char* singular = nullptr;   // the singular constraint system, when status is singular
+  ImpulseSolution<Scalar> impulse;  // P_C, the regime, the ratios and limits (its text empty)
+  // Every warning analyze would give this impulse, but energy_gained, which needs the energies:
+  // the strategy's, tensile_normal_impulse, not_finite, rounding.
+  WarningSet warnings = 0;
+  // Want::velocities: the impulse on vehicle 1 in world axes and the post-impact states.
+  Vec3<Scalar> P_W;
+  std::array<Vec3<Scalar>, 2> v_W, w_B;  // CG velocity (world), angular velocity (body)
+};
+
+template <typename E, typename Scalar>
+LeanSolution<Scalar> solve_lean_with(const Scene<Scalar>& s, const Strategy<Scalar>& st, Want want) {
+  LeanSolution<Scalar> out;
+  out.impulse.with_text = false;
+  const Problem<Scalar> p = make_problem<E>(s, true);
+  if (!approaching(p)) {
+    out.status = Status::not_approaching;
+    return out;
+  }
+  if (const Singular f = solve_strategy<E>(p, st, out.impulse)) {
+    out.status = Status::singular;
+    out.singular = f.what;
+    return out;
+  }
+  WarningSet w = out.impulse.codes;
+  const Vec3<Scalar>& P = out.impulse.P_C;
+  if (!(P.x() > Scalar(0))) w |= warning_bit(WarningCode::tensile_normal_impulse);
+  bool finite = all_finite(P) && is_finite(p.m_prime) && all_finite(p.K) && all_finite(p.V_ri);
+  if (want == Want::velocities) {
+    out.P_W = s.R_WC * P;
+    const Vec3<Scalar> minus_P_W = -out.P_W;
+    for (int i = 0; i < 2; ++i) {
+      const RigidBody<Scalar> after = apply_impulse(s.body[i], i == 0 ? out.P_W : minus_P_W);
+      out.v_W[i] = after.v_W;
+      out.w_B[i] = after.w_B;
+      finite = finite && all_finite(after.v_W) && all_finite(after.w_B);
+    }
+  }
+  if (!finite) w |= warning_bit(WarningCode::not_finite);
+  if constexpr (!is_exact_v<Scalar>) {
+    // Decided on the bound when it is at most half the trusted fraction, else on the settled value.
+    if (!(rounding_bound_of(p.amplification_bound, p.V_ri) <= Scalar(rounding::kTrustedFraction / 2))) {
+      p.settle();
+      if (!trusted(rounding_bound_of(p.amplification, p.V_ri)))
+        w |= warning_bit(WarningCode::rounding);
+    }
+  }
+  out.warnings = w;
+  return out;
+}
+
+// The scene must outlive the call only; nothing is kept.
+template <typename Scalar>
+LeanSolution<Scalar> solve_lean(const Scene<Scalar>& s, const Strategy<Scalar>& st, Want want = Want::impulse,
+                                Engine engine = Engine::generated) {
+  if (engine == Engine::direct) return solve_lean_with<direct::DirectEngine>(s, st, want);
+  return solve_lean_with<GeneratedEngine>(s, st, want);
+}
+
+}  // namespace impact3d
+
+namespace impact3d {
+#define IMPACT3D_EXTERN_SOLVE_LEAN_(type, name, u) \
+  extern template LeanSolution<type> solve_lean(const Scene<type>&, const Strategy<type>&, Want, Engine);
+IMPACT3D_SCALARS(IMPACT3D_EXTERN_SOLVE_LEAN_)
+#undef IMPACT3D_EXTERN_SOLVE_LEAN_
+}  // namespace impact3d

@@ -1,0 +1,164 @@
+// The batch entry points: the widest lane kernel this CPU runs, then the scalar path (solve_lean) for the
+// tail of the range and for every row the lanes left to it.
+#include "impact3d/numeric/batch/columns.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <string>
+
+#include <xsimd/xsimd.hpp>
+
+#include "impact3d/numeric/lean.hpp"
+#include "lanes_entry.hpp"
+
+namespace impact3d::batch {
+
+namespace {
+
+using Run = std::size_t (*)(const CollisionColumns&, const ImpulseColumns&, std::size_t, std::size_t);
+
+using SinCosRun = std::size_t (*)(const double*, double*, double*, std::size_t);
+
+struct Kernel {
+  const char* name;
+  std::size_t width;
+  Run run;
+  SinCosRun sin_cos;
+};
+
+// Widest first.
+const Kernel kKernels[] = {{"avx512f", 8, lanes::run_avx512f, lanes::sin_cos_avx512f},
+                           {"avx2+fma", 4, lanes::run_avx2_fma, lanes::sin_cos_avx2_fma},
+                           {"sse2", 2, lanes::run_sse2, lanes::sin_cos_sse2}};
+
+bool runs_here(const Kernel& k) {
+  const auto cpu = xsimd::available_architectures();
+  const std::string name = k.name;
+  return name == "avx512f" ? cpu.avx512f : name == "avx2+fma" ? cpu.fma3_avx2 : cpu.sse2;
+}
+
+std::atomic<const Kernel*>& chosen() {
+  static std::atomic<const Kernel*> k = [] {
+    for (const Kernel& k : kKernels)
+      if (runs_here(k)) return &k;
+    return &kKernels[std::size(kKernels) - 1];
+  }();
+  return k;
+}
+
+const Kernel& kernel() { return *chosen().load(); }
+
+void solve_row(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i) {
+  const Scene<double> s = scene_of(row_of(in, i));
+  const LeanSolution<double> r = solve_lean(s, Strategy<double>(PcCrash<double>{in.mu[i]}));
+  const bool solved = r.status == Status::solved;
+  for (int k = 0; k < 3; ++k) out.P_C[k][i] = solved ? r.impulse.P_C(k) : std::numeric_limits<double>::quiet_NaN();
+  out.status[i] = static_cast<std::uint8_t>(r.status);
+  out.regime[i] = static_cast<std::uint8_t>(r.impulse.regime);
+  out.warnings[i] = r.warnings;
+}
+
+}  // namespace
+
+const char* simd_name() { return kernel().name; }
+
+std::vector<std::string> simd_available() {
+  std::vector<std::string> names;
+  for (const Kernel& k : kKernels)
+    if (runs_here(k)) names.push_back(k.name);
+  return names;
+}
+
+bool use_simd(const std::string& name) {
+  for (const Kernel& k : kKernels)
+    if (k.name == name && runs_here(k)) {
+      chosen().store(&k);
+      return true;
+    }
+  return false;
+}
+std::size_t simd_width() { return kernel().width; }
+
+RawCollision<double> row_of(const CollisionColumns& in, std::size_t i) {
+  RawCollision<double> c;
+  for (int b = 0; b < 2; ++b) {
+    const VehicleColumns& v = in.vehicle[b];
+    RawVehicle<double>& r = c.vehicle[b];
+    r.mass = v.mass[i];
+    const int entry[3][3] = {{xx, xy, xz}, {xy, yy, yz}, {xz, yz, zz}};
+    for (int p = 0; p < 3; ++p) {
+      for (int q = 0; q < 3; ++q) r.J_B(p, q) = v.J_B[entry[p][q]][i];
+      r.v_W(p) = v.v_W[p][i];
+      r.w_B(p) = v.w_B[p][i];
+      r.p_CgIc_B(p) = v.p_CgIc_B[p][i];
+    }
+    r.yaw_deg = v.yaw_deg[i], r.pitch_deg = v.pitch_deg[i], r.roll_deg = v.roll_deg[i];
+  }
+  c.normal_yaw_deg = in.normal_yaw_deg[i], c.normal_pitch_deg = in.normal_pitch_deg[i];
+  c.tangent_roll_deg = in.tangent_roll_deg[i], c.restitution = in.restitution[i];
+  return c;
+}
+
+void pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end) {
+  const std::size_t lanes_end = kernel().run(in, out, begin, end);
+  for (std::size_t i = begin; i < lanes_end; ++i)
+    if (out.status[i] == lanes::kDeferred) solve_row(in, out, i);
+  for (std::size_t i = lanes_end; i < end; ++i) solve_row(in, out, i);
+}
+
+void sin_cos_deg_columns(const double* deg, double* s, double* c, std::size_t n) {
+  for (std::size_t i = kernel().sin_cos(deg, s, c, n); i < n; ++i) {
+    const SinCos<double> r = sin_cos_deg(deg[i]);
+    s[i] = r.s, c[i] = r.c;
+  }
+}
+
+// ---- Tables -------------------------------------------------------------------------------------------
+
+void CollisionTable::resize(std::size_t rows) {
+  rows_ = rows;
+  for (auto& column : data_) column.resize(rows);
+}
+
+// Column order: per vehicle mass, J (6), yaw, pitch, roll, v (3), w (3), r (3); then the contact angles,
+// the restitution and mu.
+void CollisionTable::set(std::size_t i, const RawCollision<double>& c, double mu) {
+  int k = 0;
+  for (const RawVehicle<double>& v : c.vehicle) {
+    data_[k++][i] = v.mass;
+    for (auto [p, q] : {std::pair{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}}) data_[k++][i] = v.J_B(p, q);
+    data_[k++][i] = v.yaw_deg, data_[k++][i] = v.pitch_deg, data_[k++][i] = v.roll_deg;
+    for (const Vec3<double>* x : {&v.v_W, &v.w_B, &v.p_CgIc_B})
+      for (int p = 0; p < 3; ++p) data_[k++][i] = (*x)(p);
+  }
+  for (double x : {c.normal_yaw_deg, c.normal_pitch_deg, c.tangent_roll_deg, c.restitution, mu}) data_[k++][i] = x;
+}
+
+CollisionColumns CollisionTable::columns() const {
+  CollisionColumns c;
+  c.rows = rows_;
+  int k = 0;
+  for (VehicleColumns& v : c.vehicle) {
+    v.mass = data_[k++].data();
+    for (auto& j : v.J_B) j = data_[k++].data();
+    v.yaw_deg = data_[k++].data(), v.pitch_deg = data_[k++].data(), v.roll_deg = data_[k++].data();
+    for (auto* x : {&v.v_W, &v.w_B, &v.p_CgIc_B})
+      for (auto& p : *x) p = data_[k++].data();
+  }
+  c.normal_yaw_deg = data_[k++].data(), c.normal_pitch_deg = data_[k++].data(), c.tangent_roll_deg = data_[k++].data();
+  c.restitution = data_[k++].data(), c.mu = data_[k++].data();
+  return c;
+}
+
+void ImpulseTable::resize(std::size_t rows) {
+  for (auto& p : P_C) p.resize(rows);
+  status.resize(rows), regime.resize(rows), warnings.resize(rows);
+}
+
+ImpulseColumns ImpulseTable::columns() {
+  return {{P_C[0].data(), P_C[1].data(), P_C[2].data()}, status.data(), regime.data(), warnings.data()};
+}
+
+}  // namespace impact3d::batch

@@ -1,0 +1,208 @@
+// pc-crash on one group of SIMD lanes, through the generated kernels instantiated on xsimd batches.
+// Included only by lanes_arch.cpp, which CMake compiles once per instruction set: nothing here may
+// instantiate code shared with other translation units (only batch types and raw pointers), so that no
+// wider instruction leaks into code the whole program links.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+
+#include <xsimd/xsimd.hpp>
+
+#include <Eigen/Core>
+
+#include "impact3d/generated/coefficient_matrix.hpp"
+#include "impact3d/generated/full_impact.hpp"
+#include "impact3d/generated/solution_plane.hpp"
+#include "impact3d/numeric/batch/columns.hpp"
+#include "lanes_entry.hpp"
+
+// Eigen holds batches as the scalar of fixed-size matrices that the kernels only index.
+namespace Eigen {
+template <typename T, typename A>
+struct NumTraits<xsimd::batch<T, A>> : GenericNumTraits<T> {
+  using Real = xsimd::batch<T, A>;
+  using NonInteger = Real;
+  using Nested = Real;
+  using Literal = Real;
+  enum { IsComplex = 0, IsInteger = 0, IsSigned = 1, RequireInitialization = 1, ReadCost = 1, AddCost = 1, MulCost = 1 };
+};
+}  // namespace Eigen
+
+namespace impact3d::batch::lanes {
+
+template <typename B>
+using M3 = Eigen::Matrix<B, 3, 3>;
+template <typename B>
+using V3 = Eigen::Matrix<B, 3, 1>;
+
+template <typename B>
+struct SinCosB {
+  B s, c;
+};
+
+// sin_cos_deg (rotation.hpp) on lanes: quarter turns taken out exactly, the rest by xsimd's sincos.
+template <typename B>
+SinCosB<B> sin_cos_deg(const B& deg) {
+  const B quarter(90.0), zero(0.0), one(1.0);
+  const B turns = xsimd::floor(deg / quarter + B(0.5));
+  const B rest = deg - turns * quarter;
+  const B q = turns - B(4.0) * xsimd::floor(turns / B(4.0));
+  const auto both = xsimd::sincos(rest * B(3.141592653589793115997963468544185161590576171875) / B(180.0));
+  const auto exact = rest == zero;
+  const B s = xsimd::select(exact, zero, both.first), c = xsimd::select(exact, one, both.second);
+  const auto q1 = q == one, q2 = q == B(2.0), q3 = q == B(3.0);
+  return {xsimd::select(q1, c, xsimd::select(q2, -s, xsimd::select(q3, -c, s))),
+          xsimd::select(q1, -s, xsimd::select(q2, -c, xsimd::select(q3, s, c)))};
+}
+
+// rotation_zyx_deg_closed on lanes.
+template <typename B>
+M3<B> rotation(const B& yaw, const B& pitch, const B& roll) {
+  const SinCosB<B> z = sin_cos_deg(yaw), y = sin_cos_deg(pitch), x = sin_cos_deg(roll);
+  const B zc_ys = z.c * y.s, zs_ys = z.s * y.s;
+  M3<B> r;
+  r(0, 0) = z.c * y.c, r(0, 1) = -z.s * x.c + zc_ys * x.s, r(0, 2) = z.s * x.s + zc_ys * x.c;
+  r(1, 0) = z.s * y.c, r(1, 1) = z.c * x.c + zs_ys * x.s, r(1, 2) = -z.c * x.s + zs_ys * x.c;
+  r(2, 0) = -y.s, r(2, 1) = y.c * x.s, r(2, 2) = y.c * x.c;
+  return r;
+}
+
+// A^T B, summed in the order Eigen's product sums.
+template <typename B>
+M3<B> transpose_times(const M3<B>& a, const M3<B>& b) {
+  M3<B> r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r(i, j) = a(0, i) * b(0, j) + a(1, i) * b(1, j) + a(2, i) * b(2, j);
+  return r;
+}
+
+template <typename B>
+V3<B> times(const M3<B>& a, const V3<B>& v) {
+  V3<B> r;
+  for (int i = 0; i < 3; ++i) r(i) = a(i, 0) * v(0) + a(i, 1) * v(1) + a(i, 2) * v(2);
+  return r;
+}
+
+template <typename B>
+B norm(const V3<B>& v) {
+  return xsimd::sqrt(v(0) * v(0) + v(1) * v(1) + v(2) * v(2));
+}
+
+// rounding::spd_condition_bound on lanes: ||M||_F ||M^-1||_F, infinite where Sylvester's test fails.
+template <typename B>
+B spd_condition_bound(const M3<B>& M) {
+  const B a = M(0, 0), b = M(0, 1), c = M(0, 2), d = M(1, 1), e = M(1, 2), f = M(2, 2), two(2.0), zero(0.0);
+  const B A = d * f - e * e, Bc = c * e - b * f, C = b * e - c * d;
+  const B D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
+  const B det = a * A + b * Bc + c * C;
+  const B norm2 = a * a + d * d + f * f + two * (b * b + c * c + e * e);
+  const B inverse2 = (A * A + D * D + F * F + two * (Bc * Bc + C * C + E * E)) / (det * det);
+  const B k = xsimd::sqrt(norm2 * inverse2);
+  const auto spd = (a > zero) && (F > zero) && (det > zero) && xsimd::isfinite(k);
+  return xsimd::select(spd, k, B(std::numeric_limits<double>::infinity()));
+}
+
+template <typename B>
+struct Body {
+  B mass;
+  M3<B> J, R_WB;
+  V3<B> v, w, r;
+};
+
+template <typename B>
+Body<B> load_body(const VehicleColumns& c, std::size_t i) {
+  Body<B> b;
+  b.mass = B::load_unaligned(c.mass + i);
+  const int entry[3][3] = {{xx, xy, xz}, {xy, yy, yz}, {xz, yz, zz}};
+  for (int p = 0; p < 3; ++p) {
+    for (int q = 0; q < 3; ++q) b.J(p, q) = B::load_unaligned(c.J_B[entry[p][q]] + i);
+    b.v(p) = B::load_unaligned(c.v_W[p] + i);
+    b.w(p) = B::load_unaligned(c.w_B[p] + i);
+    b.r(p) = B::load_unaligned(c.p_CgIc_B[p] + i);
+  }
+  b.R_WB = rotation(B::load_unaligned(c.yaw_deg + i), B::load_unaligned(c.pitch_deg + i), B::load_unaligned(c.roll_deg + i));
+  return b;
+}
+
+// v_Ic_W (kinematics.hpp) on lanes.
+template <typename B>
+V3<B> v_Ic(const Body<B>& b) {
+  V3<B> wxr;
+  wxr(0) = b.w(1) * b.r(2) - b.w(2) * b.r(1);
+  wxr(1) = b.w(2) * b.r(0) - b.w(0) * b.r(2);
+  wxr(2) = b.w(0) * b.r(1) - b.w(1) * b.r(0);
+  const V3<B> turned = times(b.R_WB, wxr);
+  V3<B> out;
+  for (int k = 0; k < 3; ++k) out(k) = b.v(k) + turned(k);
+  return out;
+}
+
+// Rows [i, i + B::size) of `in`: impulses, regimes and warnings of the rows decided on the lanes, status
+// kDeferred for the others.
+template <typename B>
+void pc_crash(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i) {
+  using Mask = typename B::batch_bool_type;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const B zero(0.0), one(1.0), two(2.0), inf(std::numeric_limits<double>::infinity());
+  const Body<B> b0 = load_body<B>(in.vehicle[0], i), b1 = load_body<B>(in.vehicle[1], i);
+  const M3<B> R_WC = rotation(B::load_unaligned(in.normal_yaw_deg + i), B::load_unaligned(in.normal_pitch_deg + i),
+                              B::load_unaligned(in.tangent_roll_deg + i));
+  const B e = B::load_unaligned(in.restitution + i), mu = B::load_unaligned(in.mu + i);
+
+  const B m_prime = b0.mass * b1.mass / (b0.mass + b1.mass);
+  const M3<B> K = generated::coefficient_matrix(m_prime, b0.J, b1.J, b0.r, b1.r, transpose_times(R_WC, b0.R_WB),
+                                                transpose_times(R_WC, b1.R_WB));
+  const V3<B> v0 = v_Ic(b0), v1 = v_Ic(b1);
+  V3<B> dv;
+  for (int k = 0; k < 3; ++k) dv(k) = v1(k) - v0(k);
+  V3<B> V_ri;
+  for (int k = 0; k < 3; ++k) V_ri(k) = R_WC(0, k) * dv(0) + R_WC(1, k) * dv(1) + R_WC(2, k) * dv(2);
+
+  // Amplification bound (rounding.hpp): kappa(K) cond(J) max(1, (|v_IC1| + |v_IC2|) / V_rn), bounded.
+  const B cond_J = xsimd::max(spd_condition_bound(b0.J), spd_condition_bound(b1.J));
+  const B kappa = spd_condition_bound(K);
+  const B cancellation = xsimd::max(one, (norm(v0) + norm(v1)) / V_ri(0));
+  B amplification = kappa * cond_J * cancellation;
+  amplification = xsimd::select(xsimd::isfinite(amplification) && amplification > zero, amplification, inf);
+
+  const V3<B> P_fi = generated::full_impact(K, m_prime, e, V_ri);
+  const B P_cp = xsimd::hypot(P_fi(1), P_fi(2));
+  const B gir = P_cp / P_fi(0);
+  // phi_FI's plane, and whether its direction could be lost in rounding (Problem::negligible, bounded).
+  const B scale = norm(P_fi);
+  const Mask plane_doubt = P_cp <= two * B(16.0 * eps) * kappa * scale;
+  const B c = P_fi(1) / P_cp, s = P_fi(2) / P_cp;
+  const B cir = xsimd::select(e == zero, generated::plane_generalized_ratio(K, V_ri, c, s),
+                              generated::plane_critical_ratio(K, e, V_ri, c, s));
+  const V3<B> P_sl = generated::plane_impulse(K, m_prime, e, V_ri, c, s, mu);
+  const Mask full = mu >= gir;
+  V3<B> P;
+  for (int k = 0; k < 3; ++k) P(k) = xsimd::select(full, P_fi(k), P_sl(k));
+
+  // The rounding bound of rounding.hpp with the bounded amplification, and the decisions taken on it.
+  const B quotient = one + xsimd::hypot(V_ri(1), V_ri(2)) / V_ri(0);
+  const B bound = B(32.0 * eps) * amplification * quotient;
+  const Mask undecided_doubt = xsimd::abs(mu - gir) <= two * bound * (one + xsimd::abs(gir));
+  const Mask rounding_doubt = !(bound <= B(1e-6 / 2));
+  const Mask finite = xsimd::isfinite(P(0)) && xsimd::isfinite(P(1)) && xsimd::isfinite(P(2)) && xsimd::isfinite(gir) &&
+                      xsimd::isfinite(cir) && xsimd::isfinite(P_fi(0)) && xsimd::isfinite(P_fi(1)) &&
+                      xsimd::isfinite(P_fi(2)) && xsimd::isfinite(K(0, 0)) && xsimd::isfinite(m_prime);
+  const Mask deferred = !(V_ri(0) > zero) || !finite || plane_doubt || undecided_doubt || rounding_doubt;
+
+  for (int k = 0; k < 3; ++k) P(k).store_unaligned(out.P_C[k] + i);
+  alignas(64) double full_lane[B::size], deferred_lane[B::size], tensile_lane[B::size];
+  xsimd::select(full, one, zero).store_aligned(full_lane);
+  xsimd::select(deferred, one, zero).store_aligned(deferred_lane);
+  xsimd::select(P(0) > zero, zero, one).store_aligned(tensile_lane);
+  constexpr std::uint8_t kFull = static_cast<std::uint8_t>(Regime::full), kSliding = static_cast<std::uint8_t>(Regime::sliding);
+  constexpr WarningSet kTensile = warning_bit(WarningCode::tensile_normal_impulse);
+  for (std::size_t l = 0; l < B::size; ++l) {
+    out.status[i + l] = deferred_lane[l] != 0.0 ? kDeferred : std::uint8_t(0);
+    out.regime[i + l] = full_lane[l] != 0.0 ? kFull : kSliding;
+    out.warnings[i + l] = tensile_lane[l] != 0.0 ? kTensile : WarningSet(0);
+  }
+}
+
+}  // namespace impact3d::batch::lanes

@@ -1,0 +1,187 @@
+// The lean solve (numeric/lean.hpp) against analyze: the same strategy code on the same Problem, so the
+// impulse, the regime, the ratios and the post-impact velocities must be equal bit for bit, and the
+// warnings the same codes, although the lean path bounds the condition of K instead of computing it
+// and computes it only when a decision falls within the bound. Seeded random collisions, every
+// strategy, both engines, double and long double; the lanes of ordinary outcomes (not approaching, a
+// singular system) become a status, and no case allocates.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <random>
+
+#include "impact3d/numeric/lean.hpp"
+#include "support.hpp"
+
+namespace {
+std::atomic<long> allocations{0};
+}  // namespace
+
+// Every allocation of this program is counted, so that the lean path's "no heap per case" is measured.
+void* operator new(std::size_t n) {
+  ++allocations;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace impact3d;
+using namespace impact3d::test;
+
+namespace {
+
+template <typename T>
+Scene<T> cast_scene(const Scene<double>& s) {
+  Scene<T> t;
+  for (int i = 0; i < 2; ++i) {
+    const RigidBody<double>& b = s.body[i];
+    t.body[i] = {T(b.mass), b.J_B.cast<T>(), b.R_WB.cast<T>(), b.v_W.cast<T>(), b.w_B.cast<T>(), b.p_CgIc_B.cast<T>()};
+  }
+  t.R_WC = s.R_WC.cast<T>();
+  t.restitution = T(s.restitution);
+  return t;
+}
+
+template <typename T>
+Strategy<T> cast_strategy(const Strategy<double>& st) {
+  if (auto* pc = std::get_if<PcCrash<double>>(&st)) return PcCrash<T>{T(pc->mu)};
+  if (auto* w = std::get_if<Wach<double>>(&st)) return Wach<T>{T(w->mu), w->limit};
+  const auto& b = std::get<Brach<double>>(st);
+  auto opt = [](const std::optional<double>& x) { return x ? std::optional<T>(T(*x)) : std::optional<T>(); };
+  return Brach<T>{opt(b.mu_t), opt(b.mu_z)};
+}
+
+WarningSet codes_of(const std::vector<Warning>& ws) {
+  WarningSet set = 0;
+  for (const Warning& w : ws) set |= warning_bit(w.code);
+  return set;
+}
+
+template <typename T>
+bool same(const std::optional<T>& a, const std::optional<T>& b) {
+  return a.has_value() == b.has_value() && (!a || *a == *b || (*a != *a && *b != *b));
+}
+
+// One scene and strategy both ways; true when a solution was compared.
+template <typename T>
+bool compare(const Scene<T>& s, const Strategy<T>& st, Engine engine) {
+  const LeanSolution<T> lean = solve_lean(s, st, Want::velocities, engine);
+  Analysis<T> a;
+  try {
+    a = analyze(s, {st}, engine);
+  } catch (const SolveError& e) {
+    INFO(e.what());
+    CHECK(lean.status != Status::solved);
+    if (lean.status == Status::not_approaching) CHECK(std::string(e.what()).find("not approaching") != std::string::npos);
+    if (lean.status == Status::singular) CHECK(std::string(e.what()).rfind(lean.singular, 0) == 0);
+    return false;
+  }
+  REQUIRE(lean.status == Status::solved);
+  const Solution<T>& sol = a.solutions.at(0);
+  const ImpulseSolution<T>& imp = sol.impulse;
+  CHECK(lean.impulse.P_C == imp.P_C);
+  CHECK(lean.impulse.regime == imp.regime);
+  CHECK(same(lean.impulse.mu, imp.mu));
+  CHECK(same(lean.impulse.gir, imp.gir));
+  CHECK(same(lean.impulse.cir, imp.cir));
+  CHECK(same(lean.impulse.mu_t_critical, imp.mu_t_critical));
+  CHECK(same(lean.impulse.mu_z_critical, imp.mu_z_critical));
+  CHECK(lean.impulse.warnings.empty());  // no text on the lean path
+  CHECK(lean.P_W == sol.P_W);
+  for (int i = 0; i < 2; ++i) {
+    CHECK(lean.v_W[i] == sol.after[i].v_W);
+    CHECK(lean.w_B[i] == sol.after[i].w_B);
+  }
+  // Every code analyze gives but energy_gained, which needs the energies the lean path does not compute.
+  CHECK(lean.warnings == (codes_of(sol.warnings) & ~warning_bit(WarningCode::energy_gained)));
+  return true;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("solve_lean gives analyze's impulse, ratios, velocities and warning codes, bit for bit", "[lean]",
+                   double, long double) {
+  std::mt19937_64 g(20261121);
+  std::uniform_real_distribution<double> u(0, 1);
+  int compared = 0, undecided = 0, not_approaching = 0;
+  for (int c = 0; c < 150; ++c) {
+    Scene<double> s = random_scene(g);
+    if (c % 10 == 9)  // the bodies separating at the impulse centre: a status, not an exception
+      for (auto& b : s.body) b.v_W = -b.v_W, b.w_B = -b.w_B;
+    const Scene<TestType> t = cast_scene<TestType>(s);
+    for (const Strategy<double>& st : every_strategy(0.05 + 1.2 * u(g)))
+      for (Engine e : kEngines) compared += compare(t, cast_strategy<TestType>(st), e);
+    if (c % 10 == 9) {
+      ++not_approaching;
+      CHECK(solve_lean(t, cast_strategy<TestType>(every_strategy(0.5)[0])).status == Status::not_approaching);
+      continue;
+    }
+    // mu exactly at the GIR and at Wach's CIR: the decision falls within the bound, so the lean path
+    // computes kappa(K) as analyze does and gives the same undecided warning.
+    const auto a = analyze(t, {PcCrash<TestType>{0}, Wach<TestType>{0}});
+    for (Engine e : kEngines) {
+      const auto pc = solve_lean(t, Strategy<TestType>(PcCrash<TestType>{*a.solutions[0].impulse.gir}), Want::impulse, e);
+      const auto w = solve_lean(t, Strategy<TestType>(Wach<TestType>{*a.solutions[1].impulse.cir}), Want::impulse, e);
+      undecided += has_warning(pc.warnings, WarningCode::undecided) && has_warning(w.warnings, WarningCode::undecided);
+      compared += compare(t, Strategy<TestType>(PcCrash<TestType>{*a.solutions[0].impulse.gir}), e);
+      compared += compare(t, Strategy<TestType>(Wach<TestType>{*a.solutions[1].impulse.cir}), e);
+    }
+  }
+  // 135 approaching scenes x (10 strategies + 2 at the threshold) x 2 engines; 15 separating x 10 x 2
+  // refused alike.
+  CHECK(not_approaching == 15);
+  CHECK(compared == 135 * 12 * 2);
+  CHECK(undecided == 135 * 2);
+}
+
+TEST_CASE("solve_lean reports an undefined plane, a singular system and a separating contact as analyze does",
+          "[lean]") {
+  // Head-on along the contact normal, impulse centres on it, no rotation: no sliding at all, so Wach's
+  // plane (eq 21) is undefined, and the Full Impact has no contact-plane impulse (eq 15 undefined).
+  Scene<double> s;
+  for (int i = 0; i < 2; ++i) {
+    s.body[i] = {1500.0, Mat3<double>(Vec3<double>(500, 2500, 2800).asDiagonal()), Mat3<double>::Identity(),
+                 Vec3<double>(i == 0 ? -10 : 10, 0, 0), Vec3<double>::Zero(), Vec3<double>(i == 0 ? 2 : -2, 0, 0)};
+  }
+  s.R_WC = Mat3<double>::Identity();
+  s.restitution = 0.2;
+  if (relative_velocity_C(s).x() < 0) std::swap(s.body[0].v_W, s.body[1].v_W);
+  for (Engine e : kEngines) {
+    CHECK(compare(s, Strategy<double>(Wach<double>{0.4}), e));
+    CHECK(compare(s, Strategy<double>(PcCrash<double>{0.4}), e));
+    CHECK(has_warning(solve_lean(s, Strategy<double>(Wach<double>{0.4}), Want::impulse, e).warnings,
+                      WarningCode::plane_undefined));
+    CHECK(has_warning(solve_lean(s, Strategy<double>(PcCrash<double>{0.4}), Want::impulse, e).warnings,
+                      WarningCode::plane_undefined));
+  }
+  // Masses whose product overflows: m' is infinite and every closed form divides by it.
+  Scene<double> huge = s;
+  for (auto& b : huge.body) b.mass = 1e300;
+  const auto r = solve_lean(huge, Strategy<double>(PcCrash<double>{0.4}));
+  CHECK(r.status == Status::singular);
+  CHECK(std::string(r.singular) == "full impact");
+  CHECK_FALSE(compare(huge, Strategy<double>(PcCrash<double>{0.4}), Engine::generated));
+}
+
+TEST_CASE("solve_lean allocates nothing, with or without warnings", "[lean]") {
+  std::mt19937_64 g(7);
+  std::vector<Scene<double>> scenes;
+  for (int c = 0; c < 200; ++c) scenes.push_back(random_scene(g));
+  std::vector<Strategy<double>> strategies = every_strategy(0.4);
+  const auto a = analyze(scenes[0], {PcCrash<double>{0}});
+  strategies.push_back(PcCrash<double>{*a.solutions[0].impulse.gir});  // undecided: settles kappa
+  int solved = 0, warned = 0;
+  const long before = allocations.load();
+  for (const auto& s : scenes)
+    for (const auto& st : strategies)
+      for (Want want : {Want::impulse, Want::velocities}) {
+        const auto r = solve_lean(s, st, want);
+        solved += r.status == Status::solved;
+        warned += r.warnings != 0;
+      }
+  CHECK(allocations.load() - before == 0);
+  CHECK(solved == 200 * 11 * 2);
+  CHECK(warned >= 2);  // the threshold case at least, both ways
+}
