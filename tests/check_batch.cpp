@@ -42,11 +42,12 @@ double ulps(double a, double b) {
   REQUIRE(batch::use_simd(simd));                        \
   INFO("instruction set " << simd);
 
-TEST_CASE("the lanes' sine and cosine of degrees are within 2 ulps of the scalar path's", "[batch]") {
+TEST_CASE("the lanes' sine and cosine of degrees are within 4 ulps of the scalar path's", "[batch]") {
   FOR_EACH_SIMD();
-  // The scalar path reduces by quarter turns and calls glibc (under an ulp); xsimd's are Cephes-style
-  // polynomials on [-pi/4, pi/4], also about an ulp: 2 ulps between them. Multiples of 90 degrees are
-  // exact on both.
+  // Both reduce by quarter turns to [-45, 45] degrees. The scalar path takes radians as (rest pi) / 180,
+  // two roundings, the lanes as rest (pi / 180), one rounding of a rounded constant: the radians differ
+  // by up to 2 ulps, which sine near 0 keeps. glibc's sin and cos are within an ulp, xsimd's Cephes-style
+  // polynomials on [-pi/4, pi/4] about as close: 4 ulps in all. Multiples of 90 degrees are exact on both.
   std::mt19937_64 g(3);
   std::uniform_real_distribution<double> u(-720, 720);
   std::vector<double> deg;
@@ -66,7 +67,7 @@ TEST_CASE("the lanes' sine and cosine of degrees are within 2 ulps of the scalar
     }
   }
   INFO(batch::simd_name() << ": worst " << worst << " ulps over " << deg.size() << " angles");
-  CHECK(worst <= 2);
+  CHECK(worst <= 4);
   CHECK(exact_quarters == 10);  // -360, -270, ..., 360 from the grid of 45s, and -0
 }
 
@@ -118,10 +119,10 @@ TEST_CASE("the SIMD batch gives solve_lean's status, regime and warnings on ever
   batch::ImpulseTable out(rows.size());
   const batch::CollisionColumns in = table.columns();
   // Two ranges, as two threads would split it.
-  batch::pc_crash_columns(in, out.columns(), 0, rows.size() / 2 + 1);
-  batch::pc_crash_columns(in, out.columns(), rows.size() / 2 + 1, rows.size());
+  const std::size_t on_scalar = batch::pc_crash_columns(in, out.columns(), 0, rows.size() / 2 + 1) +
+                                batch::pc_crash_columns(in, out.columns(), rows.size() / 2 + 1, rows.size());
 
-  int solved = 0, differing = 0, full = 0, sliding = 0, statuses[3] = {0, 0, 0}, undecided = 0, undefined = 0;
+  int solved = 0, full = 0, sliding = 0, statuses[3] = {0, 0, 0}, undecided = 0, undefined = 0;
   double worst = 0;  // |dP| / (eps A |P|)
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const RawCollision<double> back = batch::row_of(in, i);
@@ -142,7 +143,6 @@ TEST_CASE("the SIMD batch gives solve_lean's status, regime and warnings on ever
     CHECK(out.regime[i] == static_cast<std::uint8_t>(r.impulse.regime));
     ++(r.impulse.regime == Regime::full ? full : sliding);
     const Vec3<double> P(out.P_C[0][i], out.P_C[1][i], out.P_C[2][i]);
-    differing += P != r.impulse.P_C;
     const double A = make_problem<GeneratedEngine>(s).amplification;
     const double err = (P - r.impulse.P_C).norm() / r.impulse.P_C.norm();
     CHECK(err <= rounding::agreement_bound(A));
@@ -158,6 +158,11 @@ TEST_CASE("the SIMD batch gives solve_lean's status, regime and warnings on ever
   CHECK(undefined >= 8);
   CHECK(full > 500);
   CHECK(sliding > 500);
-  CHECK(differing > solved / 4);  // the lanes computed them: their roundings differ from the scalar path's
+  // The lanes decided every row but the 40 built for the scalar path (each fails a lane's test: not
+  // approaching, not finite, a plane or a regime within twice the cheap bound), the two ranges' tails
+  // (under a lane group each) and the few random rows whose decisions fall within twice the cheap bound.
+  INFO(on_scalar << " rows on the scalar path");
+  CHECK(on_scalar >= 40);
+  CHECK(on_scalar <= 40 + 2 * 8 + 20);
   CHECK(worst <= 2 * rounding::kResultRoundings);
 }

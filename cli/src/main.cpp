@@ -11,6 +11,7 @@
 #include "impact3d/io/render.hpp"
 #include "impact3d/verification/compare.hpp"
 #include "impact3d/verification/verify.hpp"
+#include "batch.hpp"
 #include "plot.hpp"
 #include "user_error.hpp"
 
@@ -103,6 +104,18 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--engine", engine,
                         "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
       ->check(CLI::IsMember({"generated", "direct"}));
+  auto* batch_cmd = app.add_subcommand("batch", "solve many cases, one JSON object per line (contract: many-cases.md)");
+  impact3d::cli::BatchOptions bopt;
+  std::string batch_engine = "generated", batch_format = "jsonl";
+  batch_cmd->add_option("input", bopt.input, "JSON Lines file of cases (default: standard input, also -)");
+  batch_cmd->add_option("-o,--output", bopt.output, "file for the results (default: standard output)");
+  batch_cmd->add_option("--jobs", bopt.jobs, "threads (default: every core)")->check(CLI::Range(1, 1024));
+  batch_cmd->add_option("--format", batch_format, "jsonl: one result document per line")->check(CLI::IsMember({"jsonl"}));
+  batch_cmd->add_option("--strategy", bopt.strategies, "replace every case's strategies (as solve's --strategy)");
+  batch_cmd->add_option("--precision", bopt.precision, "arithmetic, as solve's")
+      ->check(CLI::IsMember(impact3d::io::precision_names()));
+  batch_cmd->add_option("--engine", batch_engine, "generated (default) or direct, as solve's")
+      ->check(CLI::IsMember({"generated", "direct"}));
   auto* compare_cmd = app.add_subcommand("compare", "compare another tool's results with reference results");
   std::string reference, other;
   impact3d::verification::CompareOptions copt;
@@ -151,6 +164,11 @@ int main(int argc, char** argv) {
       const std::string written = naming_strategies(spec, [&] { return impact3d::cli::plot(spec, popt); });
       std::fputs(written.c_str(), stdout);
       return 0;
+    });
+  if (batch_cmd->parsed())
+    return guarded("", [&] {
+      bopt.engine = batch_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
+      return impact3d::cli::batch(bopt);
     });
   if (verify_cmd->parsed()) return guarded("", [&] { return impact3d::verification::verify(vopt); });
   if (compare_cmd->parsed()) return guarded("", [&] { return impact3d::verification::compare(reference, other, copt); });

@@ -101,11 +101,13 @@ RawCollision<double> row_of(const CollisionColumns& in, std::size_t i) {
   return c;
 }
 
-void pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end) {
+std::size_t pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end) {
   const std::size_t lanes_end = kernel().run(in, out, begin, end);
+  std::size_t scalar = end - lanes_end;
   for (std::size_t i = begin; i < lanes_end; ++i)
-    if (out.status[i] == lanes::kDeferred) solve_row(in, out, i);
+    if (out.status[i] == lanes::kDeferred) solve_row(in, out, i), ++scalar;
   for (std::size_t i = lanes_end; i < end; ++i) solve_row(in, out, i);
+  return scalar;
 }
 
 void sin_cos_deg_columns(const double* deg, double* s, double* c, std::size_t n) {

@@ -43,13 +43,16 @@ struct SinCosB {
 };
 
 // sin_cos_deg (rotation.hpp) on lanes: quarter turns taken out exactly, the rest by xsimd's sincos.
+// Multiplications replace the scalar path's divisions (a division costs a lane group some 16 cycles):
+// the quarter turn may then differ from the scalar path's where deg / 90 is within an ulp of a half
+// turn, where either gives a rest of 45 degrees, and the radians by an ulp; multiples of 90 stay exact.
 template <typename B>
 SinCosB<B> sin_cos_deg(const B& deg) {
   const B quarter(90.0), zero(0.0), one(1.0);
-  const B turns = xsimd::floor(deg / quarter + B(0.5));
+  const B turns = xsimd::floor(deg * B(1.0 / 90.0) + B(0.5));
   const B rest = deg - turns * quarter;
-  const B q = turns - B(4.0) * xsimd::floor(turns / B(4.0));
-  const auto both = xsimd::sincos(rest * B(3.141592653589793115997963468544185161590576171875) / B(180.0));
+  const B q = turns - B(4.0) * xsimd::floor(turns * B(0.25));
+  const auto both = xsimd::sincos(rest * B(3.141592653589793115997963468544185161590576171875 / 180.0));
   const auto exact = rest == zero;
   const B s = xsimd::select(exact, zero, both.first), c = xsimd::select(exact, one, both.second);
   const auto q1 = q == one, q2 = q == B(2.0), q3 = q == B(3.0);
@@ -141,8 +144,10 @@ V3<B> v_Ic(const Body<B>& b) {
 
 // Rows [i, i + B::size) of `in`: impulses, regimes and warnings of the rows decided on the lanes, status
 // kDeferred for the others.
+// Flattened: everything it calls is inlined, so that the independent chains (nine sines and cosines,
+// two bodies) interleave instead of waiting on each other's latency through calls.
 template <typename B>
-void pc_crash(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i) {
+[[gnu::flatten]] void pc_crash(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i) {
   using Mask = typename B::batch_bool_type;
   constexpr double eps = std::numeric_limits<double>::epsilon();
   const B zero(0.0), one(1.0), two(2.0), inf(std::numeric_limits<double>::infinity());

@@ -46,7 +46,7 @@ template <typename Scalar>
 struct LeanSolution {
   Status status = Status::solved;
   const char* singular = nullptr;   // the singular constraint system, when status is singular
-  ImpulseSolution<Scalar> impulse;  // P_C, the regime, the ratios and limits (its text empty)
+  ImpulseSolution<Scalar> impulse;  // P_C, the regime, the ratios and limits (no text, no plane angle)
   // Every warning analyze would give this impulse, but energy_gained, which needs the energies:
   // the strategy's, tensile_normal_impulse, not_finite, rounding.
   WarningSet warnings = 0;
@@ -58,7 +58,7 @@ struct LeanSolution {
 template <typename E, typename Scalar>
 LeanSolution<Scalar> solve_lean_with(const Scene<Scalar>& s, const Strategy<Scalar>& st, Want want) {
   LeanSolution<Scalar> out;
-  out.impulse.with_text = false;
+  out.impulse.for_report = false;
   const Problem<Scalar> p = make_problem<E>(s, true);
   if (!approaching(p)) {
     out.status = Status::not_approaching;
@@ -86,9 +86,9 @@ LeanSolution<Scalar> solve_lean_with(const Scene<Scalar>& s, const Strategy<Scal
   if (!finite) w |= warning_bit(WarningCode::not_finite);
   if constexpr (!is_exact_v<Scalar>) {
     // Decided on the bound when it is at most half the trusted fraction, else on the settled value.
-    if (!(rounding_bound_of(p.amplification_bound, p.V_ri) <= Scalar(rounding::kTrustedFraction / 2))) {
+    if (!(rounding_bound_of(p.amplification_bound, p.quotient) <= Scalar(rounding::kTrustedFraction / 2))) {
       p.settle();
-      if (!trusted(rounding_bound_of(p.amplification, p.V_ri)))
+      if (!trusted(rounding_bound_of(p.amplification, p.quotient)))
         w |= warning_bit(WarningCode::rounding);
     }
   }

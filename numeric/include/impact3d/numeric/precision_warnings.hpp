@@ -26,10 +26,11 @@ bool solution_finite(const Solution<Scalar>& s) {
   return ok;
 }
 
-// The relative rounding bound of a solution: kResultRoundings eps A (1 + |V_cp / V_n|).
+// The relative rounding bound of a solution: kResultRoundings eps A (1 + |V_cp / V_n|), the last factor
+// given as `quotient`.
 template <typename Scalar>
-Scalar rounding_bound_of(const Scalar& amplification, const Vec3<Scalar>& V_ri) {
-  return rounding::relative_bound(Scalar(amplification * rounding::quotient_factor(V_ri)));
+Scalar rounding_bound_of(const Scalar& amplification, const Scalar& quotient) {
+  return rounding::relative_bound(Scalar(amplification * quotient));
 }
 
 // Whether a rounding bound is within the trusted fraction (a NaN is not).
@@ -48,7 +49,7 @@ void flag_precision(Solution<Scalar>& s, const Scalar& amplification) {
                             "not finite: a result is NaN or infinite at this precision (printed as null in JSON); "
                             "it cannot be trusted"});
     const Scalar quotient = rounding::quotient_factor(s.V_ri);
-    s.rounding_bound = rounding_bound_of(amplification, s.V_ri);
+    s.rounding_bound = rounding_bound_of(amplification, quotient);
     const double a = static_cast<double>(Scalar(amplification * quotient));
     const double bound = static_cast<double>(s.rounding_bound);
     if (trusted(s.rounding_bound)) return;

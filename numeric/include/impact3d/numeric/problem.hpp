@@ -32,6 +32,8 @@ struct Problem {
   mutable Scalar amplification = Scalar(1);
   Scalar kappa_bound, amplification_bound;  // >= kappa and amplification
   mutable const Scene<Scalar>* unsettled = nullptr;
+  // The quotient's factor 1 + |V_cp / V_n| that ratios and the decisions on them carry (rounding.hpp).
+  Scalar quotient = Scalar(1);
 
   void settle() const {
     if (!unsettled) return;
@@ -67,9 +69,10 @@ Problem<Scalar> make_problem(const Scene<Scalar>& s, bool bounded = false) {
   p.K = E::coefficient_matrix(s);
   p.V_ri = relative_velocity_C(s);
   p.restitution = s.restitution;
+  if constexpr (!is_exact_v<Scalar>) p.quotient = rounding::quotient_factor(p.V_ri);
   if (bounded && !is_exact_v<Scalar>) {
     p.kappa_bound = rounding::spd_condition_bound(p.K);
-    p.amplification_bound = rounding::amplification_bound(s, p.kappa_bound);
+    p.amplification_bound = rounding::amplification_bound(s, p.V_ri.x(), p.kappa_bound);
     p.kappa = p.amplification = std::numeric_limits<Scalar>::quiet_NaN();
     p.unsettled = &s;
   } else {

@@ -34,10 +34,11 @@ SinCos<Scalar> sin_cos_deg(const Scalar& deg) {
       c = cos(rad);
     }
   }
-  if (q == Scalar(0)) return {s, c};
-  if (q == Scalar(1)) return {c, -s};
-  if (q == Scalar(2)) return {-s, -c};
-  return {-c, s};
+  // The quarter turn q by selection rather than branches (random angles would mispredict them):
+  // odd q exchanges sine and cosine, q >= 2 negates the sine, q = 1 or 2 the cosine.
+  const bool odd = q == Scalar(1) || q == Scalar(3), negate_s = q >= Scalar(2), negate_c = q == Scalar(1) || q == Scalar(2);
+  const Scalar s_out = odd ? c : s, c_out = odd ? s : c;
+  return {negate_s ? Scalar(-s_out) : s_out, negate_c ? Scalar(-c_out) : c_out};
 }
 
 template <typename Scalar>
@@ -73,18 +74,22 @@ Mat3<Scalar> rotation_zyx_deg(const Scalar& yaw, const Scalar& pitch, const Scal
   return rot_z(sin_cos_deg(yaw)) * rot_y(sin_cos_deg(pitch)) * rot_x(sin_cos_deg(roll));
 }
 
-// The same rotation in closed form, a third of the operations, for the lean path and batches
-// (raw_collision.hpp). Its entries equal rotation_zyx_deg's bit for bit but for the sign of some zeros
+// The same rotation in closed form from the sines and cosines, a third of the operations, for the lean
+// path and batches (raw_collision.hpp). Its entries equal rotation_zyx_deg's bit for bit but for the sign of some zeros
 // (the product adds zero terms that this form leaves out; tests/check_rotation.cpp).
 template <typename Scalar>
-Mat3<Scalar> rotation_zyx_deg_closed(const Scalar& yaw, const Scalar& pitch, const Scalar& roll) {
-  const SinCos<Scalar> z = sin_cos_deg(yaw), y = sin_cos_deg(pitch), x = sin_cos_deg(roll);
+Mat3<Scalar> rotation_zyx(const SinCos<Scalar>& z, const SinCos<Scalar>& y, const SinCos<Scalar>& x) {
   const Scalar zc_ys = z.c * y.s, zs_ys = z.s * y.s;
   Mat3<Scalar> r;
   r << z.c * y.c, -z.s * x.c + zc_ys * x.s, z.s * x.s + zc_ys * x.c,  //
       z.s * y.c, z.c * x.c + zs_ys * x.s, -z.c * x.s + zs_ys * x.c,   //
       -y.s, y.c * x.s, y.c * x.c;
   return r;
+}
+
+template <typename Scalar>
+Mat3<Scalar> rotation_zyx_deg_closed(const Scalar& yaw, const Scalar& pitch, const Scalar& roll) {
+  return rotation_zyx(sin_cos_deg(yaw), sin_cos_deg(pitch), sin_cos_deg(roll));
 }
 
 // Contact frame from a normal and a tangent given in world axes: n normalised, t made orthogonal to n

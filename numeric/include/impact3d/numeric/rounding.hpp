@@ -84,15 +84,15 @@ Scalar spd_condition_bound(const Mat3<Scalar>& M) {
   }
 }
 
-// The amplification A above from the conditions of K and of the inertia tensors (computed or bounded);
-// infinite where either is, or where the bodies do not approach.
+// The amplification A above from the conditions of K and of the inertia tensors (computed or bounded)
+// and the normal approach speed V_rn; infinite where either condition is, or where the bodies do not
+// approach.
 template <typename Scalar>
-Scalar amplification_of(const Scene<Scalar>& s, const Scalar& kappa_K, const Scalar& cond_J) {
+Scalar amplification_of(const Scene<Scalar>& s, const Scalar& V_rn, const Scalar& kappa_K, const Scalar& cond_J) {
   if constexpr (is_exact_v<Scalar>) {
     return Scalar(1);
   } else {
     using std::max;
-    const Scalar V_rn = relative_velocity_C(s).x();
     const Scalar cancellation = max(Scalar(1), Scalar((v_Ic_W(s.body[0]).norm() + v_Ic_W(s.body[1]).norm()) / V_rn));
     const Scalar a = kappa_K * cond_J * cancellation;
     return is_finite(a) && a > Scalar(0) ? a : std::numeric_limits<Scalar>::infinity();
@@ -103,14 +103,15 @@ Scalar amplification_of(const Scene<Scalar>& s, const Scalar& kappa_K, const Sca
 template <typename Scalar>
 Scalar amplification(const Scene<Scalar>& s, const Scalar& kappa_K) {
   using std::max;
-  return amplification_of(s, kappa_K, Scalar(max(spd_condition(s.body[0].J_B), spd_condition(s.body[1].J_B))));
+  return amplification_of(s, Scalar(relative_velocity_C(s).x()), kappa_K,
+                          Scalar(max(spd_condition(s.body[0].J_B), spd_condition(s.body[1].J_B))));
 }
 
-// An upper bound of the amplification from spd_condition_bound, for the lean path.
+// An upper bound of the amplification from spd_condition_bound, for the lean path, which has V_rn.
 template <typename Scalar>
-Scalar amplification_bound(const Scene<Scalar>& s, const Scalar& kappa_K_bound) {
+Scalar amplification_bound(const Scene<Scalar>& s, const Scalar& V_rn, const Scalar& kappa_K_bound) {
   using std::max;
-  return amplification_of(s, kappa_K_bound,
+  return amplification_of(s, V_rn, kappa_K_bound,
                           Scalar(max(spd_condition_bound(s.body[0].J_B), spd_condition_bound(s.body[1].J_B))));
 }
 

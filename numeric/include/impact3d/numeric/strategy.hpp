@@ -88,15 +88,15 @@ struct ImpulseSolution {
   std::optional<PlaneAxes<Scalar>> plane;  // the solution plane used: phi_FI (eq 15) or Wach's phi (eq 21)
   std::optional<Scalar> plane_angle_deg;    // its angle from t towards z
   WarningSet codes = 0;                     // the codes of `warnings`
-  // The text of each warning, for a report; the lean path solves with `with_text` off and allocates
-  // nothing, and make_text is then never called.
-  std::vector<Warning> warnings;
-  bool with_text = true;
+  std::vector<Warning> warnings;            // with their text, for a report
+  // What only a report prints: the warnings' text and the plane's angle. The lean path solves with it
+  // off, allocates nothing and takes no arctangent; make_text is then never called.
+  bool for_report = true;
 
   template <typename MakeText>
   void warn(WarningCode code, MakeText&& make_text) {
     codes |= warning_bit(code);
-    if (with_text) warnings.push_back({code, std::string(make_text())});
+    if (for_report) warnings.push_back({code, std::string(make_text())});
   }
 };
 

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "impact3d/numeric/batch/sin_cos.hpp"
 #include "impact3d/numeric/raw_collision.hpp"
 #include "impact3d/numeric/strategy.hpp"
 
@@ -56,13 +57,10 @@ std::size_t simd_width();
 std::vector<std::string> simd_available();
 bool use_simd(const std::string& name);
 
-// Rows [begin, end) of `in` into the same rows of `out`. Safe to call on disjoint ranges from several
-// threads.
-void pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end);
-
-// sin_cos_deg (rotation.hpp) of each angle as the lanes compute it (tests/check_batch.cpp measures it
-// against the scalar path in ulps).
-void sin_cos_deg_columns(const double* deg, double* s, double* c, std::size_t n);
+// Rows [begin, end) of `in` into the same rows of `out`; returns how many of them the scalar path
+// solved (the tail shorter than a lane group and the rows the lanes left to it). Safe to call on
+// disjoint ranges from several threads.
+std::size_t pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end);
 
 // Row i as a RawCollision and its mu, for the scalar path.
 RawCollision<double> row_of(const CollisionColumns& in, std::size_t i);

@@ -31,13 +31,12 @@ Scalar plane_length(const Scalar& a, const Scalar& b) {
   }
 }
 
-// The plane through n containing the contact-plane direction (d_t, d_z); when that direction is lost in
-// rounding (relative to `scale`) the t axis is used and `undefined` is recorded as a warning. The plane
-// angle from t towards z is stored in the solution.
+// The plane through n containing the contact-plane direction (d_t, d_z) of the given length; when that
+// direction is lost in rounding (relative to `scale`) the t axis is used and `undefined` is recorded as a
+// warning. The plane angle from t towards z is stored in the solution for a report.
 template <typename Scalar>
-PlaneAxes<Scalar> solution_plane(const Problem<Scalar>& p, const Scalar& d_t, const Scalar& d_z, const Scalar& scale,
-                                 ImpulseSolution<Scalar>& out, const char* undefined) {
-  const Scalar length = plane_length(d_t, d_z);
+PlaneAxes<Scalar> solution_plane(const Problem<Scalar>& p, const Scalar& d_t, const Scalar& d_z, const Scalar& length,
+                                 const Scalar& scale, ImpulseSolution<Scalar>& out, const char* undefined) {
   PlaneAxes<Scalar> ax{Scalar(1), Scalar(0)};
   if (p.negligible(length, scale))
     out.warn(WarningCode::plane_undefined, [&] { return undefined; });
@@ -46,7 +45,7 @@ PlaneAxes<Scalar> solution_plane(const Problem<Scalar>& p, const Scalar& d_t, co
   out.plane = ax;
   if constexpr (!is_exact_v<Scalar>) {  // an angle is not rational; the exact report takes it at 100 digits
     using std::atan2;
-    out.plane_angle_deg = degrees(Scalar(atan2(ax.s, ax.c)));
+    if (out.for_report) out.plane_angle_deg = degrees(Scalar(atan2(ax.s, ax.c)));
   }
   return ax;
 }
@@ -70,7 +69,7 @@ void flag_if_undecided(ImpulseSolution<Scalar>& out, const Problem<Scalar>& p, c
     using std::abs;
     if (!is_finite(limit)) return;
     auto bound = [&](const Scalar& amplification) {
-      return Scalar(rounding::relative_bound(amplification) * rounding::quotient_factor(p.V_ri) * (Scalar(1) + abs(limit)));
+      return Scalar(rounding::relative_bound(amplification) * p.quotient * (Scalar(1) + abs(limit)));
     };
     if (p.within(Scalar(mu - limit), bound, false))
       out.warn(WarningCode::undecided, [&] {

@@ -17,10 +17,10 @@ template <typename Engine, typename Scalar>
 Singular pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec, ImpulseSolution<Scalar>& out) {
   const auto P_fi = Engine::try_full_impact(p, p.restitution);
   if (!P_fi) return {"full impact"};
-  const PlaneAxes<Scalar> ax = solution_plane(p, P_fi->y(), P_fi->z(), magnitude(*P_fi), out,
+  const Scalar P_cp = plane_length(P_fi->y(), P_fi->z());
+  const PlaneAxes<Scalar> ax = solution_plane(p, P_fi->y(), P_fi->z(), P_cp, magnitude(*P_fi), out,
                                                "phi_FI (eq 15) is undefined: the Full Impact has no contact-plane "
                                                "impulse; the t axis (phi_FI = 0) is used");
-  const Scalar P_cp = plane_length(P_fi->y(), P_fi->z());
   const Scalar gir = P_cp / P_fi->x();
   out.gir = gir;
   out.cir = Engine::try_plane_ratio(p, ax, p.restitution);

@@ -10,7 +10,8 @@ namespace impact3d::strategies {
 // Fills `out`; returns the singular constraint system, if any (then `out` is incomplete).
 template <typename Engine, typename Scalar>
 Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolution<Scalar>& out) {
-  const PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), magnitude(p.V_ri), out,
+  const PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), plane_length(p.V_ri.y(), p.V_ri.z()),
+                                               magnitude(p.V_ri), out,
                                                "phi (eq 21) is undefined: there is no initial sliding velocity; "
                                                "the t axis (phi = 0) is used");
   out.cir = Engine::try_plane_ratio(p, ax, p.restitution);

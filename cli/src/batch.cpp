@@ -1,0 +1,282 @@
+// `impact3d batch`: the input is read in blocks of lines, each block solved by --jobs threads and written
+// in input order before the next is read, so memory stays flat in the number of rows and output appears
+// as it is done. Each row is the document `solve --format json` prints for its case, on one line, with
+// "line" first; a row that cannot be read or solved becomes {"line": i, "error": "..."} and the run
+// goes on. Output is written with write(2) in whole rows only, and SIGINT or SIGTERM stop the run after
+// the block in hand: the rows written are whole, and the summary says how many there are.
+#include "batch.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_writer.hpp"
+#include "impact3d/io/limits.hpp"
+#include "impact3d/io/read_case.hpp"
+#include "impact3d/io/render.hpp"
+#include "impact3d/io/strategy_option.hpp"
+#include "user_error.hpp"
+
+namespace impact3d::cli {
+
+namespace {
+
+volatile std::sig_atomic_t stop_signal = 0;
+
+extern "C" void on_stop(int signal) { stop_signal = signal; }
+
+// Rows solved between two writes: enough to keep every thread busy, few enough to bound memory.
+constexpr std::size_t kBlockRows = 2048;
+
+struct Row {
+  long line;         // 1-based line number in the input
+  std::string text;  // the case, or empty when too long
+  bool too_long = false;
+};
+
+// Lines of a file descriptor, at most limits::kCaseFileBytes each: a longer line is skipped to its end
+// and reported, not held.
+class LineReader {
+ public:
+  explicit LineReader(int fd) : fd_(fd) {}
+
+  // The next non-blank line; false at the end of the input.
+  bool next(Row& row) {
+    for (;;) {
+      std::string text;
+      bool too_long = false, any = false;
+      for (;;) {
+        if (pos_ == len_ && !fill()) break;
+        any = true;
+        const char* start = buf_ + pos_;
+        const void* nl = std::memchr(start, '\n', len_ - pos_);
+        const std::size_t n = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - start) : len_ - pos_;
+        if (!too_long && text.size() + n > io::limits::kCaseFileBytes) too_long = true, text.clear(), text.shrink_to_fit();
+        if (!too_long) text.append(start, n);
+        pos_ += n;
+        if (nl) {
+          ++pos_;
+          break;
+        }
+      }
+      if (!any) return false;
+      ++line_;
+      if (!too_long && text.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank: not a case
+      row = {line_, std::move(text), too_long};
+      return true;
+    }
+  }
+  long lines() const { return line_; }
+  std::uint64_t bytes() const { return consumed_; }
+
+ private:
+  bool fill() {
+    for (;;) {
+      const ssize_t n = ::read(fd_, buf_, sizeof buf_);
+      if (n < 0 && errno == EINTR) {
+        if (stop_signal) return false;
+        continue;
+      }
+      if (n < 0) throw UserError(fmt::format("batch: cannot read the input ({})", std::strerror(errno)));
+      pos_ = 0;
+      len_ = static_cast<std::size_t>(n);
+      consumed_ += len_;
+      return n > 0;
+    }
+  }
+  int fd_;
+  char buf_[1 << 16];
+  std::size_t pos_ = 0, len_ = 0;
+  long line_ = 0;
+  std::uint64_t consumed_ = 0;
+};
+
+// The pretty-printed result document on one line: whitespace outside strings dropped, "line" first.
+std::string one_line(const std::string& doc, long line) {
+  std::string out = fmt::format("{{\"line\": {}, ", line);
+  out.reserve(doc.size());
+  bool in_string = false, escaped = false, after_brace = false;
+  for (std::size_t i = 0; i < doc.size(); ++i) {
+    const char c = doc[i];
+    if (in_string) {
+      out += c;
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+      continue;
+    }
+    if (c == '\n' || c == ' ' || c == '\t' || c == '\r') continue;
+    if (i == 0 && c == '{') {
+      after_brace = true;
+      continue;
+    }
+    if (after_brace && c == '}') {  // an empty document: drop the separator
+      out.resize(out.size() - 2);
+    }
+    after_brace = false;
+    if (c == '"') in_string = true;
+    out += c;
+    if (c == ':' || c == ',') out += ' ';
+  }
+  out += '\n';
+  return out;
+}
+
+std::string error_record(long line, const std::string& problem) {
+  return fmt::format("{{\"line\": {}, \"error\": {}}}\n", line, io::JsonWriter::quote(io::printable(problem)));
+}
+
+struct Solved {
+  std::string text;
+  bool ok = false;
+  bool internal = false;  // a defect of impact3d, not of the row: the run's status is 3
+};
+
+Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::StrategySpec>& strategies) {
+  if (row.too_long)
+    return {error_record(row.line, fmt::format("$: the case is longer than {} bytes", io::limits::kCaseFileBytes)), false};
+  try {
+    io::CaseSpec spec = io::read_case(row.text);
+    if (!strategies.empty()) spec.strategies = strategies;
+    try {
+      return {one_line(io::render(spec, o.precision, {"json", 0, o.engine}), row.line), true};
+    } catch (const SolveError& e) {
+      throw io::no_solution(spec, e);
+    }
+  } catch (const io::CaseError& e) {
+    return {error_record(row.line, e.line()), false};
+  } catch (const Irrational& e) {
+    return {error_record(row.line, std::string("$: ") + e.what()), false};
+  } catch (const std::exception& e) {
+    return {error_record(row.line, std::string("$: internal error: ") + e.what()), false, true};
+  }
+}
+
+int open_input(const std::string& path) {
+  if (path == "-") return STDIN_FILENO;
+  // No blocking on a FIFO without a writer: opened non-blocking, then made blocking to read.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+  if (fd < 0) throw UserError(fmt::format("{}: cannot read the file ({})", path, std::strerror(errno)));
+  struct stat st {};
+  if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
+    ::close(fd);
+    throw UserError(fmt::format("{}: cannot read the file (a directory)", path));
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  return fd;
+}
+
+int open_output(const std::string& path) {
+  if (path == "-") return STDOUT_FILENO;
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOCTTY, 0644);
+  if (fd < 0) throw UserError(fmt::format("{}: cannot write the file ({})", path, std::strerror(errno)));
+  return fd;
+}
+
+// All of `text`, which holds whole rows; false when the output is gone (a closed pipe).
+bool write_all(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+class Progress {
+ public:
+  Progress(bool shown, std::uint64_t total_bytes) : shown_(shown), total_(total_bytes) {}
+  void update(long rows, std::uint64_t bytes) {
+    if (!shown_) return;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double rate = seconds > 0 ? rows / seconds : 0;
+    std::string left;
+    if (total_ > 0 && bytes > 0 && bytes <= total_)
+      left = fmt::format(", {:.0f} s left", seconds * static_cast<double>(total_ - bytes) / static_cast<double>(bytes));
+    std::fprintf(stderr, "\rimpact3d: batch: %ld rows, %.0f rows/s%s   ", rows, rate, left.c_str());
+  }
+  void finish() {
+    if (shown_) std::fputs("\r\033[K", stderr);
+  }
+
+ private:
+  bool shown_;
+  std::uint64_t total_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+int batch(const BatchOptions& o) {
+  std::vector<io::StrategySpec> strategies;
+  if (o.strategies.size() > io::limits::kStrategies)
+    throw io::CaseError("--strategy", fmt::format("more than {} strategies", io::limits::kStrategies));
+  for (std::size_t i = 0; i < o.strategies.size(); ++i)
+    strategies.push_back(io::read_strategy_option(o.strategies[i], static_cast<int>(i)));
+  const unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
+
+  const int in = open_input(o.input);
+  struct stat st {};
+  const std::uint64_t total = ::fstat(in, &st) == 0 && S_ISREG(st.st_mode) ? static_cast<std::uint64_t>(st.st_size) : 0;
+  const int out = open_output(o.output);
+  struct sigaction sa {};
+  sa.sa_handler = on_stop;
+  sigemptyset(&sa.sa_mask);
+  ::sigaction(SIGINT, &sa, nullptr);
+  ::sigaction(SIGTERM, &sa, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);
+
+  LineReader reader(in);
+  Progress progress(::isatty(STDERR_FILENO) == 1, total);
+  long read = 0, solved = 0, rejected = 0;
+  bool output_lost = false, internal = false;
+  std::vector<Row> rows;
+  std::vector<Solved> results;
+  while (!stop_signal && !output_lost) {
+    rows.clear();
+    Row row;
+    while (rows.size() < kBlockRows && !stop_signal && reader.next(row)) rows.push_back(std::move(row));
+    if (rows.empty()) break;
+    results.assign(rows.size(), {});
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+      for (std::size_t i; (i = next.fetch_add(1)) < rows.size();) results[i] = solve_row(rows[i], o, strategies);
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < std::min<std::size_t>(jobs, rows.size()); ++t) pool.emplace_back(work);
+    work();
+    for (auto& t : pool) t.join();
+    std::string block;
+    for (const Solved& r : results) {
+      block += r.text;
+      ++(r.ok ? solved : rejected);
+      internal = internal || r.internal;
+    }
+    read += static_cast<long>(rows.size());
+    output_lost = !write_all(out, block);
+    progress.update(read, reader.bytes());
+  }
+  progress.finish();
+  if (in != STDIN_FILENO) ::close(in);
+  if (out != STDOUT_FILENO && ::close(out) != 0) output_lost = true;
+  std::fprintf(stderr, "impact3d: batch: %ld rows read, %ld solved, %ld rejected%s\n", read, solved, rejected,
+               stop_signal ? " (interrupted: the rows written are whole)" : output_lost ? " (the output was closed)" : "");
+  if (stop_signal) return 128 + stop_signal;
+  if (output_lost || internal) return 3;
+  return rejected ? 1 : 0;
+}
+
+}  // namespace impact3d::cli

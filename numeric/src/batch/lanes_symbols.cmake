@@ -1,0 +1,25 @@
+# Requires every function an instruction set's lane object defines (nm: T, W) to be of that instruction
+# set: its entry points, or code instantiated on its xsimd batch type. Anything else (an inline function
+# of Eigen, the standard library or impact3d at double) could be picked by the linker for the whole
+# program, and would carry instructions the CPU may not have.
+# Variables: NM, OBJECT, ARCH_NAME (entry suffix), ARCH_TYPE (the xsimd arch, as nm -C prints it).
+execute_process(COMMAND ${NM} -C --defined-only ${OBJECT} OUTPUT_VARIABLE symbols RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "${NM} failed on ${OBJECT}")
+endif()
+string(REPLACE "\n" ";" lines "${symbols}")
+set(functions 0)
+foreach(line IN LISTS lines)
+  if(line MATCHES "^[0-9a-f]+ [TW] (.*)$")
+    set(name "${CMAKE_MATCH_1}")
+    math(EXPR functions "${functions} + 1")
+    string(FIND "${name}" "xsimd::batch<double, ${ARCH_TYPE}" of_arch)
+    if(of_arch EQUAL -1 AND NOT name MATCHES "^impact3d::batch::lanes::(run|sin_cos)_${ARCH_NAME}\\(")
+      message(FATAL_ERROR "${OBJECT} defines ${name}, which is not of ${ARCH_TYPE}")
+    endif()
+  endif()
+endforeach()
+if(functions LESS 2)
+  message(FATAL_ERROR "no lane entry points found in ${OBJECT}")
+endif()
+message(STATUS "${functions} functions, all of ${ARCH_TYPE}")
