@@ -59,6 +59,26 @@ Input make_input(const fs::path& dir, int copies) {
   return in;
 }
 
+// JSON text without the whitespace between tokens: two documents that print the same numbers, strings
+// and keys in the same order compare equal.
+std::string tokens(const std::string& doc) {
+  std::string out;
+  bool in_string = false, escaped = false;
+  for (char c : doc) {
+    if (in_string) {
+      if (escaped) escaped = false;
+      else if (c == '\\') escaped = true;
+      else if (c == '"') in_string = false;
+    } else if (c == ' ' || c == '\n' || c == '\t' || c == '\r') {
+      continue;
+    } else if (c == '"') {
+      in_string = true;
+    }
+    out += c;
+  }
+  return out;
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::size_t start = 0;
@@ -106,8 +126,10 @@ TEST_CASE("batch answers each case line with solve's document or solve's error, 
     json g = got;
     g.erase("line");
     CHECK(g == expected);
-    // The same digits, not only the same values: numbers are compared as printed.
-    CHECK(g.dump() == expected.dump());
+    // The same digits, not only the same values: the texts without "line" and whitespace.
+    const std::string prefix = fmt::format("{{\"line\": {}, ", line + 1);
+    REQUIRE(rows[row - 1].rfind(prefix, 0) == 0);
+    CHECK(tokens("{" + rows[row - 1].substr(prefix.size())) == tokens(s.out));
     ++compared;
   }
   CHECK(compared == in.good);

@@ -102,35 +102,10 @@ class LineReader {
   std::uint64_t consumed_ = 0;
 };
 
-// The pretty-printed result document on one line: whitespace outside strings dropped, "line" first.
-std::string one_line(const std::string& doc, long line) {
-  std::string out = fmt::format("{{\"line\": {}, ", line);
-  out.reserve(doc.size());
-  bool in_string = false, escaped = false, after_brace = false;
-  for (std::size_t i = 0; i < doc.size(); ++i) {
-    const char c = doc[i];
-    if (in_string) {
-      out += c;
-      if (escaped) escaped = false;
-      else if (c == '\\') escaped = true;
-      else if (c == '"') in_string = false;
-      continue;
-    }
-    if (c == '\n' || c == ' ' || c == '\t' || c == '\r') continue;
-    if (i == 0 && c == '{') {
-      after_brace = true;
-      continue;
-    }
-    if (after_brace && c == '}') {  // an empty document: drop the separator
-      out.resize(out.size() - 2);
-    }
-    after_brace = false;
-    if (c == '"') in_string = true;
-    out += c;
-    if (c == ':' || c == ',') out += ' ';
-  }
-  out += '\n';
-  return out;
+// The one-line result document with "line" first.
+std::string with_line(std::string doc, long line) {
+  doc.insert(1, fmt::format("\"line\": {}, ", line));
+  return doc;
 }
 
 std::string error_record(long line, const std::string& problem) {
@@ -150,7 +125,7 @@ Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::St
     io::CaseSpec spec = io::read_case(row.text);
     if (!strategies.empty()) spec.strategies = strategies;
     try {
-      return {one_line(io::render(spec, o.precision, {"json", 0, o.engine}), row.line), true};
+      return {with_line(io::render(spec, o.precision, {"jsonl", 0, o.engine}), row.line), true};
     } catch (const SolveError& e) {
       throw io::no_solution(spec, e);
     }

@@ -11,18 +11,25 @@ namespace impact3d::io {
 
 class JsonWriter {
  public:
+  // Indented (a file a person reads), or one line (JSON Lines: `batch`), with ", " and ": " between items.
+  explicit JsonWriter(bool one_line = false) : one_line_(one_line) { out_.reserve(4096); }
   void begin_object() { open('{'); }
   void end_object() { close('}'); }
   void begin_array() { open('['); }
   void end_array() { close(']'); }
   JsonWriter& key(const std::string& k) {
     item();
-    out_ += quote(k) + ": ";
+    append_quoted(out_, k);
+    out_ += ": ";
     pending_key_ = true;
     return *this;
   }
   void raw(const std::string& number_text) { value(finite(number_text)); }
-  void string(const std::string& s) { value(quote(s)); }
+  void string(const std::string& s) {
+    item();
+    pending_key_ = false;
+    append_quoted(out_, s);
+  }
   void boolean(bool b) { value(b ? "true" : "false"); }
   void null() { value("null"); }
   // A short array of numbers on one line.
@@ -36,7 +43,13 @@ class JsonWriter {
   std::string str() const { return out_ + "\n"; }
 
   static std::string quote(const std::string& s) {
-    std::string q = "\"";
+    std::string q;
+    append_quoted(q, s);
+    return q;
+  }
+
+  static void append_quoted(std::string& q, const std::string& s) {
+    q += '"';
     for (unsigned char c : s) {
       if (c == '"') q += "\\\"";
       else if (c == '\\') q += "\\\\";
@@ -48,13 +61,14 @@ class JsonWriter {
         q += hex[c & 15];
       } else q += static_cast<char>(c);
     }
-    return q + "\"";
+    q += '"';
   }
 
  private:
   std::string out_;
   std::vector<bool> has_items_;
   bool pending_key_ = false;
+  bool one_line_;
 
   static std::string finite(const std::string& number_text) {
     if (number_text.find_first_of("ni") != std::string::npos) return "null";  // inf, nan
@@ -63,10 +77,15 @@ class JsonWriter {
   void item() {
     if (pending_key_) return;
     if (!has_items_.empty()) {
-      if (has_items_.back()) out_ += ",";
+      if (has_items_.back()) out_ += one_line_ ? ", " : ",";
       has_items_.back() = true;
-      out_ += "\n" + std::string(2 * has_items_.size(), ' ');
+      newline(has_items_.size());
     }
+  }
+  void newline(std::size_t depth) {
+    if (one_line_) return;
+    out_ += '\n';
+    out_.append(2 * depth, ' ');
   }
   void value(const std::string& text) {
     item();
@@ -74,13 +93,15 @@ class JsonWriter {
     out_ += text;
   }
   void open(char c) {
-    value(std::string(1, c));
+    item();
+    pending_key_ = false;
+    out_ += c;
     has_items_.push_back(false);
   }
   void close(char c) {
     const bool had = has_items_.back();
     has_items_.pop_back();
-    if (had) out_ += "\n" + std::string(2 * has_items_.size(), ' ');
+    if (had) newline(has_items_.size());
     out_ += c;
   }
 };

@@ -12,7 +12,7 @@
 namespace impact3d::io {
 
 struct RenderOptions {
-  std::string format = "text";  // "text" | "json"
+  std::string format = "text";  // "text" | "json" | "jsonl" (the JSON document on one line)
   int digits = 0;               // text report; 0 = the precision's digits10
   Engine engine = Engine::generated;
 };

@@ -4,7 +4,7 @@
 // label of the report, the result's echo, --strategy and `plot` all read this table.
 //
 // Adding a strategy: its mechanics (numeric/strategies/, an alternative of Strategy<Scalar> in
-// strategy.hpp and its branch in analysis.hpp's solve_impulse), and a row here.
+// strategy.hpp and its branch in lean.hpp's solve_strategy), and a row here.
 #pragma once
 
 #include <array>
