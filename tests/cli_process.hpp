@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -34,10 +35,11 @@ struct Run {
 // standard input from `stdin_path` (/dev/null when empty), in `dir` when given, with at most
 // `cpu_seconds` of CPU time and, outside sanitizer builds (whose shadow memory needs the address space)
 // and when `memory_mib` > 0, that much address space: a hostile input must be rejected within both.
-// With `terminate_after_ms` > 0 the program is sent SIGTERM that long after it starts, if still running.
+// With `terminate_when` the program is sent SIGTERM, if still running, once it returns true (polled
+// every millisecond).
 inline Run run_program(const std::string& program, const std::vector<std::string>& args, const std::string& stdin_path = "",
                        const std::string& dir = "", int cpu_seconds = 20, long memory_mib = 2048,
-                       int terminate_after_ms = 0) {
+                       const std::function<bool()>& terminate_when = {}) {
   namespace fs = std::filesystem;
   static int calls = 0;
   const fs::path work = fs::temp_directory_path() / fmt::format("impact3d-argv-{}-{}", ::getpid(), calls++);
@@ -67,11 +69,11 @@ inline Run run_program(const std::string& program, const std::vector<std::string
   }
   int raw = 0;
   bool done = false;
-  for (int ms = 0; ms < terminate_after_ms && !done; ++ms) {
+  while (terminate_when && !done && !terminate_when()) {
     done = ::waitpid(pid, &raw, WNOHANG) == pid;
     if (!done) ::usleep(1000);
   }
-  if (!done && terminate_after_ms > 0) ::kill(pid, SIGTERM);
+  if (!done && terminate_when) ::kill(pid, SIGTERM);
   if (!done) ::waitpid(pid, &raw, 0);
   Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
   fs::remove_all(work);

@@ -2,8 +2,9 @@
 // in input order before the next is read, so memory stays flat in the number of rows and output appears
 // as it is done. Each row is the document `solve --format json` prints for its case, on one line, with
 // "line" first; a row that cannot be read or solved becomes {"line": i, "error": "..."} and the run
-// goes on. Output is written with write(2) in whole rows only, and SIGINT or SIGTERM stop the run after
-// the block in hand: the rows written are whole, and the summary says how many there are.
+// goes on. Output is written with write(2) in whole rows only. SIGINT or SIGTERM stop the run: the rows
+// in hand are finished and written up to the first not started, every row written is whole, and the
+// summary counts them; a second signal ends the program at once.
 #include "batch.hpp"
 
 #include <fcntl.h>
@@ -17,6 +18,7 @@
 #include <cstdio>
 #include <cstring>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -36,8 +38,10 @@ volatile std::sig_atomic_t stop_signal = 0;
 
 extern "C" void on_stop(int signal) { stop_signal = signal; }
 
-// Rows solved between two writes: enough to keep every thread busy, few enough to bound memory.
+// Rows solved between two writes: enough to keep every thread busy, few enough to bound memory (a
+// block also ends at kBlockBytes of case text, since a row may be as long as a case file).
 constexpr std::size_t kBlockRows = 2048;
+constexpr std::size_t kBlockBytes = 32 << 20;
 
 struct Row {
   long line;         // 1-based line number in the input
@@ -70,7 +74,7 @@ class LineReader {
           break;
         }
       }
-      if (!any) return false;
+      if (!any || stopped_) return false;  // at the end, or stopped inside a line: no partial row
       ++line_;
       if (!too_long && text.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank: not a case
       row = {line_, std::move(text), too_long};
@@ -85,7 +89,7 @@ class LineReader {
     for (;;) {
       const ssize_t n = ::read(fd_, buf_, sizeof buf_);
       if (n < 0 && errno == EINTR) {
-        if (stop_signal) return false;
+        if (stop_signal) return !(stopped_ = true);
         continue;
       }
       if (n < 0) throw UserError(fmt::format("batch: cannot read the input ({})", std::strerror(errno)));
@@ -100,6 +104,7 @@ class LineReader {
   std::size_t pos_ = 0, len_ = 0;
   long line_ = 0;
   std::uint64_t consumed_ = 0;
+  bool stopped_ = false;
 };
 
 // The one-line result document with "line" first.
@@ -120,7 +125,8 @@ struct Solved {
 
 Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::StrategySpec>& strategies) {
   if (row.too_long)
-    return {error_record(row.line, fmt::format("$: the case is longer than {} bytes", io::limits::kCaseFileBytes)), false};
+    return {error_record(row.line, fmt::format("$: larger than {} bytes, the limit for this input", io::limits::kCaseFileBytes)),
+            false};
   try {
     io::CaseSpec spec = io::read_case(row.text);
     if (!strategies.empty()) spec.strategies = strategies;
@@ -209,6 +215,7 @@ int batch(const BatchOptions& o) {
   const int out = open_output(o.output);
   struct sigaction sa {};
   sa.sa_handler = on_stop;
+  sa.sa_flags = SA_RESETHAND;  // a second signal ends the program at once
   sigemptyset(&sa.sa_mask);
   ::sigaction(SIGINT, &sa, nullptr);
   ::sigaction(SIGTERM, &sa, nullptr);
@@ -220,27 +227,38 @@ int batch(const BatchOptions& o) {
   bool output_lost = false, internal = false;
   std::vector<Row> rows;
   std::vector<Solved> results;
+  std::vector<char> done;
   while (!stop_signal && !output_lost) {
     rows.clear();
+    std::size_t bytes = 0;
     Row row;
-    while (rows.size() < kBlockRows && !stop_signal && reader.next(row)) rows.push_back(std::move(row));
+    while (rows.size() < kBlockRows && bytes < kBlockBytes && !stop_signal && reader.next(row)) {
+      bytes += row.text.size();
+      rows.push_back(std::move(row));
+    }
     if (rows.empty()) break;
     results.assign(rows.size(), {});
+    done.assign(rows.size(), 0);
     std::atomic<std::size_t> next{0};
-    auto work = [&] {
-      for (std::size_t i; (i = next.fetch_add(1)) < rows.size();) results[i] = solve_row(rows[i], o, strategies);
+    auto work = [&] {  // a stop leaves the rows not yet started
+      for (std::size_t i; !stop_signal && (i = next.fetch_add(1)) < rows.size();) {
+        results[i] = solve_row(rows[i], o, strategies);
+        done[i] = 1;
+      }
     };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::min<std::size_t>(jobs, rows.size()); ++t) pool.emplace_back(work);
-    work();
-    for (auto& t : pool) t.join();
-    std::string block;
-    for (const Solved& r : results) {
-      block += r.text;
-      ++(r.ok ? solved : rejected);
-      internal = internal || r.internal;
+    {
+      std::vector<std::jthread> pool;  // joined on leaving the scope, whatever happens
+      for (unsigned t = 1; t < std::min<std::size_t>(jobs, rows.size()); ++t) pool.emplace_back(work);
+      work();
     }
-    read += static_cast<long>(rows.size());
+    std::string block;
+    std::size_t written = 0;
+    for (; written < rows.size() && done[written]; ++written) {  // the finished rows before the first not
+      block += results[written].text;
+      ++(results[written].ok ? solved : rejected);
+      internal = internal || results[written].internal;
+    }
+    read += static_cast<long>(written);
     output_lost = !write_all(out, block);
     progress.update(read, reader.bytes());
   }

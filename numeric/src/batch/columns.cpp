@@ -8,8 +8,6 @@
 #include <limits>
 #include <string>
 
-#include <xsimd/xsimd.hpp>
-
 #include "impact3d/numeric/lean.hpp"
 #include "lanes_entry.hpp"
 
@@ -33,10 +31,14 @@ const Kernel kKernels[] = {{"avx512f", 8, lanes::run_avx512f, lanes::sin_cos_avx
                            {"avx2+fma", 4, lanes::run_avx2_fma, lanes::sin_cos_avx2_fma},
                            {"sse2", 2, lanes::run_sse2, lanes::sin_cos_sse2}};
 
+// GCC's CPU test, which also asks the OS (XGETBV) whether it saves the wide registers: a CPU that has
+// AVX-512 under a kernel or hypervisor that leaves it off must not run the wide kernel. (xsimd 8's own
+// test reads CPUID alone.)
 bool runs_here(const Kernel& k) {
-  const auto cpu = xsimd::available_architectures();
   const std::string name = k.name;
-  return name == "avx512f" ? cpu.avx512f : name == "avx2+fma" ? cpu.fma3_avx2 : cpu.sse2;
+  if (name == "avx512f") return __builtin_cpu_supports("avx512f");
+  if (name == "avx2+fma") return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return true;  // SSE2 is x86-64's baseline
 }
 
 std::atomic<const Kernel*>& chosen() {

@@ -150,7 +150,7 @@ template <typename B>
 [[gnu::flatten]] void pc_crash(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i) {
   using Mask = typename B::batch_bool_type;
   constexpr double eps = std::numeric_limits<double>::epsilon();
-  const B zero(0.0), one(1.0), two(2.0), inf(std::numeric_limits<double>::infinity());
+  const B zero(0.0), one(1.0), inf(std::numeric_limits<double>::infinity());
   const Body<B> b0 = load_body<B>(in.vehicle[0], i), b1 = load_body<B>(in.vehicle[1], i);
   const M3<B> R_WC = rotation(B::load_unaligned(in.normal_yaw_deg + i), B::load_unaligned(in.normal_pitch_deg + i),
                               B::load_unaligned(in.tangent_roll_deg + i));
@@ -177,7 +177,10 @@ template <typename B>
   const B gir = P_cp / P_fi(0);
   // phi_FI's plane, and whether its direction could be lost in rounding (Problem::negligible, bounded).
   const B scale = norm(P_fi);
-  const Mask plane_doubt = P_cp <= two * B(16.0 * eps) * kappa * scale;
+  // Thrice the bound: the scalar path's own test (once) and the difference between the lane's value and
+  // the scalar path's, up to agreement_bound (twice).
+  const B three(3.0);
+  const Mask plane_doubt = P_cp <= three * B(16.0 * eps) * kappa * scale;
   const B c = P_fi(1) / P_cp, s = P_fi(2) / P_cp;
   const B cir = xsimd::select(e == zero, generated::plane_generalized_ratio(K, V_ri, c, s),
                               generated::plane_critical_ratio(K, e, V_ri, c, s));
@@ -189,7 +192,7 @@ template <typename B>
   // The rounding bound of rounding.hpp with the bounded amplification, and the decisions taken on it.
   const B quotient = one + xsimd::hypot(V_ri(1), V_ri(2)) / V_ri(0);
   const B bound = B(32.0 * eps) * amplification * quotient;
-  const Mask undecided_doubt = xsimd::abs(mu - gir) <= two * bound * (one + xsimd::abs(gir));
+  const Mask undecided_doubt = xsimd::abs(mu - gir) <= three * bound * (one + xsimd::abs(gir));
   const Mask rounding_doubt = !(bound <= B(1e-6 / 2));
   const Mask finite = xsimd::isfinite(P(0)) && xsimd::isfinite(P(1)) && xsimd::isfinite(P(2)) && xsimd::isfinite(gir) &&
                       xsimd::isfinite(cir) && xsimd::isfinite(P_fi(0)) && xsimd::isfinite(P_fi(1)) &&

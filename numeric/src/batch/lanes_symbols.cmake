@@ -2,7 +2,9 @@
 # set: its entry points, or code instantiated on its xsimd batch type. Anything else (an inline function
 # of Eigen, the standard library or impact3d at double) could be picked by the linker for the whole
 # program, and would carry instructions the CPU may not have.
-# Variables: NM, OBJECT, ARCH_NAME (entry suffix), ARCH_TYPE (the xsimd arch, as nm -C prints it).
+# The object's static initializer (the <iostream> object Eigen's headers bring, GCC 12) runs at startup
+# on every CPU: it must hold no VEX or EVEX instruction.
+# Variables: NM, OBJDUMP, OBJECT, ARCH_NAME (entry suffix), ARCH_TYPE (the xsimd arch, as nm -C prints it).
 execute_process(COMMAND ${NM} -C --defined-only ${OBJECT} OUTPUT_VARIABLE symbols RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "${NM} failed on ${OBJECT}")
@@ -22,4 +24,16 @@ endforeach()
 if(functions LESS 2)
   message(FATAL_ERROR "no lane entry points found in ${OBJECT}")
 endif()
-message(STATUS "${functions} functions, all of ${ARCH_TYPE}")
+execute_process(COMMAND ${OBJDUMP} -d --no-show-raw-insn --section=.text.startup ${OBJECT} OUTPUT_VARIABLE startup
+                ERROR_QUIET)
+string(REPLACE "\n" ";" startup_lines "${startup}")
+set(instructions 0)
+foreach(line IN LISTS startup_lines)
+  if(line MATCHES "^ +[0-9a-f]+:\t([a-z0-9]+)")
+    math(EXPR instructions "${instructions} + 1")
+    if(CMAKE_MATCH_1 MATCHES "^v" OR line MATCHES "%[yz]mm|%k[0-7]")
+      message(FATAL_ERROR "${OBJECT}'s static initializer uses a wide instruction: ${line}")
+    endif()
+  endif()
+endforeach()
+message(STATUS "${functions} functions, all of ${ARCH_TYPE}; ${instructions} startup instructions, none wide")

@@ -47,8 +47,10 @@ struct LeanSolution {
   Status status = Status::solved;
   const char* singular = nullptr;   // the singular constraint system, when status is singular
   ImpulseSolution<Scalar> impulse;  // P_C, the regime, the ratios and limits (no text, no plane angle)
-  // Every warning analyze would give this impulse, but energy_gained, which needs the energies:
-  // the strategy's, tensile_normal_impulse, not_finite, rounding.
+  // Every warning analyze would give this impulse but energy_gained, which needs the energies: the
+  // strategy's, tensile_normal_impulse, not_finite, rounding. not_finite concerns what was computed (the
+  // impulse, its ratios, m', K, V_ri, and the velocities when wanted), not analyze's impulse-space
+  // geometry.
   WarningSet warnings = 0;
   // Want::velocities: the impulse on vehicle 1 in world axes and the post-impact states.
   Vec3<Scalar> P_W;
@@ -64,6 +66,13 @@ LeanSolution<Scalar> solve_lean_with(const Scene<Scalar>& s, const Strategy<Scal
     out.status = Status::not_approaching;
     return out;
   }
+  // analyze takes the maximum-energy-loss impulse (eps = 0) for the impulse space before any strategy,
+  // and refuses the case where it is singular. pc-crash's Full Impact has the same matrix.
+  if (!std::holds_alternative<PcCrash<Scalar>>(st) && !E::try_full_impact(p, Scalar(0))) {
+    out.status = Status::singular;
+    out.singular = "full impact";
+    return out;
+  }
   if (const Singular f = solve_strategy<E>(p, st, out.impulse)) {
     out.status = Status::singular;
     out.singular = f.what;
@@ -73,6 +82,8 @@ LeanSolution<Scalar> solve_lean_with(const Scene<Scalar>& s, const Strategy<Scal
   const Vec3<Scalar>& P = out.impulse.P_C;
   if (!(P.x() > Scalar(0))) w |= warning_bit(WarningCode::tensile_normal_impulse);
   bool finite = all_finite(P) && is_finite(p.m_prime) && all_finite(p.K) && all_finite(p.V_ri);
+  for (const auto* ratio : {&out.impulse.mu, &out.impulse.mu_t, &out.impulse.mu_z})
+    finite = finite && (!*ratio || is_finite(**ratio));
   if (want == Want::velocities) {
     out.P_W = s.R_WC * P;
     const Vec3<Scalar> minus_P_W = -out.P_W;

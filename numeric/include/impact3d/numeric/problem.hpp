@@ -31,6 +31,7 @@ struct Problem {
   mutable Scalar kappa;
   mutable Scalar amplification = Scalar(1);
   Scalar kappa_bound, amplification_bound;  // >= kappa and amplification
+  // Not shared between threads while unsettled: settle() writes the mutable members.
   mutable const Scene<Scalar>* unsettled = nullptr;
   // The quotient's factor 1 + |V_cp / V_n| that ratios and the decisions on them carry (rounding.hpp).
   Scalar quotient = Scalar(1);
@@ -42,12 +43,17 @@ struct Problem {
     unsettled = nullptr;
   }
 
-  // Whether |x| <= limit(kappa or amplification), deciding on the bound when it is far from the limit (the
-  // bound doubled against the rounding of the two estimates) and on the settled value otherwise.
+  // Whether |x| <= limit(kappa or amplification), deciding on the bound when it is far from the limit and
+  // on the settled value otherwise. ||K||_F ||K^-1||_F >= kappa holds exactly; computed, the bound and
+  // the eigenvalues' kappa each carry a relative error of a few eps kappa. The bound is therefore used
+  // only while the rounding it implies is trusted (kResultRoundings eps A_bound <= kTrustedFraction,
+  // so eps kappa <= 3e-8), and doubled, far more than those errors.
   template <typename Limit>
   bool within(const Scalar& x, Limit&& limit, bool of_kappa) const {
     using std::abs;
-    if (unsettled && abs(x) > Scalar(2) * limit(of_kappa ? kappa_bound : amplification_bound)) return false;
+    if (unsettled && rounding::relative_bound(amplification_bound) <= Scalar(rounding::kTrustedFraction) &&
+        abs(x) > Scalar(2) * limit(of_kappa ? kappa_bound : amplification_bound))
+      return false;
     settle();
     return abs(x) <= limit(of_kappa ? kappa : amplification);
   }

@@ -85,8 +85,7 @@ Scalar spd_condition_bound(const Mat3<Scalar>& M) {
 }
 
 // The amplification A above from the conditions of K and of the inertia tensors (computed or bounded)
-// and the normal approach speed V_rn; infinite where either condition is, or where the bodies do not
-// approach.
+// and the normal approach speed V_rn (> 0 for an impact); infinite where either condition is.
 template <typename Scalar>
 Scalar amplification_of(const Scene<Scalar>& s, const Scalar& V_rn, const Scalar& kappa_K, const Scalar& cond_J) {
   if constexpr (is_exact_v<Scalar>) {

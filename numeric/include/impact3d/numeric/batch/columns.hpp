@@ -6,7 +6,7 @@
 // pc_crash_columns computes rows on SIMD lanes through the generated kernels (the widest instruction set
 // the CPU offers among AVX-512, AVX2 with FMA and SSE2), with the regime as a lane mask. A row whose
 // decision is not clear on the lane (the bodies do not approach, a value is not finite, the plane of
-// phi_FI, the regime or the rounding warning within twice the cheap rounding bound) is solved by
+// phi_FI, the regime or the rounding warning within thrice the cheap rounding bound) is solved by
 // solve_lean instead, so every row gets the scalar path's status, regime and warnings; the impulses of
 // the rows solved on lanes differ from solve_lean's only by the rounding of the vectorized sine and
 // cosine and of fused multiply-adds (tests/check_batch.cpp states and checks the bound).
