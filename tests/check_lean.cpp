@@ -14,11 +14,14 @@
 #include "impact3d/numeric/lean.hpp"
 #include "support.hpp"
 
+// Every allocation of this program is counted, so that the lean path's "no heap per case" is measured.
+// Not under AddressSanitizer, whose own operator new this replacement would mismatch: that build runs
+// the comparisons only.
+#ifndef IMPACT3D_SANITIZED
 namespace {
 std::atomic<long> allocations{0};
 }  // namespace
 
-// Every allocation of this program is counted, so that the lean path's "no heap per case" is measured.
 void* operator new(std::size_t n) {
   ++allocations;
   if (void* p = std::malloc(n ? n : 1)) return p;
@@ -26,6 +29,7 @@ void* operator new(std::size_t n) {
 }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#endif
 
 using namespace impact3d;
 using namespace impact3d::test;
@@ -174,6 +178,7 @@ TEST_CASE("solve_lean reports an undefined plane, a singular system and a separa
   }
 }
 
+#ifndef IMPACT3D_SANITIZED
 TEST_CASE("solve_lean allocates nothing, with or without warnings", "[lean]") {
   std::mt19937_64 g(7);
   std::vector<Scene<double>> scenes;
@@ -194,3 +199,4 @@ TEST_CASE("solve_lean allocates nothing, with or without warnings", "[lean]") {
   CHECK(solved == 200 * 11 * 2);
   CHECK(warned >= 2);  // the threshold case at least, both ways
 }
+#endif

@@ -52,9 +52,13 @@ SinCosB<B> sin_cos_deg(const B& deg) {
   const B turns = xsimd::floor(deg * B(1.0 / 90.0) + B(0.5));
   const B rest = deg - turns * quarter;
   const B q = turns - B(4.0) * xsimd::floor(turns * B(0.25));
-  const auto both = xsimd::sincos(rest * B(3.141592653589793115997963468544185161590576171875 / 180.0));
+  // |rad| <= pi/4: xsimd's polynomials for that range, called directly (what xsimd::sincos computes
+  // there, bit for bit), so that its general reduction, and the inline scalar function it falls back to
+  // for huge arguments, which every lane object would define, is not compiled in.
+  const B rad = rest * B(3.141592653589793115997963468544185161590576171875 / 180.0), z = rad * rad;
   const auto exact = rest == zero;
-  const B s = xsimd::select(exact, zero, both.first), c = xsimd::select(exact, one, both.second);
+  const B s = xsimd::select(exact, zero, xsimd::kernel::detail::sin_eval(z, rad));
+  const B c = xsimd::select(exact, one, xsimd::kernel::detail::cos_eval(z));
   const auto q1 = q == one, q2 = q == B(2.0), q3 = q == B(3.0);
   return {xsimd::select(q1, c, xsimd::select(q2, -s, xsimd::select(q3, -c, s))),
           xsimd::select(q1, -s, xsimd::select(q2, -c, xsimd::select(q3, s, c)))};
