@@ -13,25 +13,6 @@
 
 namespace impact3d::bench {
 
-inline Scene<double> scene_of(const NaiveCase& c) {
-  Scene<double> s;
-  for (int i = 0; i < 2; ++i) {
-    const NaiveVehicle& v = c.veh[i];
-    RigidBody<double>& b = s.body[i];
-    b.mass = v.mass;
-    for (int p = 0; p < 3; ++p) {
-      for (int q = 0; q < 3; ++q) b.J_B(p, q) = v.J[p][q];
-      b.v_W[p] = v.v[p];
-      b.w_B[p] = v.w[p];
-      b.p_CgIc_B[p] = v.r[p];
-    }
-    b.R_WB = rotation_zyx_deg(v.yaw, v.pitch, v.roll);
-  }
-  s.R_WC = rotation_zyx_deg(c.normal_yaw, c.normal_pitch, c.tangent_roll);
-  s.restitution = c.restitution;
-  return s;
-}
-
 // The same raw parameters as impact3d's RawCollision, for the lean path and the batches.
 inline RawCollision<double> raw_of(const NaiveCase& c) {
   RawCollision<double> r;
@@ -48,6 +29,19 @@ inline RawCollision<double> raw_of(const NaiveCase& c) {
   r.normal_yaw_deg = c.normal_yaw, r.normal_pitch_deg = c.normal_pitch, r.tangent_roll_deg = c.tangent_roll;
   r.restitution = c.restitution;
   return r;
+}
+
+// The scene impact3d builds from them, rotations by rotation_zyx_deg as a case file's are.
+inline Scene<double> scene_of(const NaiveCase& c) {
+  const RawCollision<double> r = raw_of(c);
+  Scene<double> s;
+  for (int i = 0; i < 2; ++i) {
+    const RawVehicle<double>& v = r.vehicle[i];
+    s.body[i] = {v.mass, v.J_B, rotation_zyx_deg(v.yaw_deg, v.pitch_deg, v.roll_deg), v.v_W, v.w_B, v.p_CgIc_B};
+  }
+  s.R_WC = rotation_zyx_deg(r.normal_yaw_deg, r.normal_pitch_deg, r.tangent_roll_deg);
+  s.restitution = r.restitution;
+  return s;
 }
 
 // Approaching collisions (V_rn > 1 m/s): full inertia tensors (principal moments turned by up to 15
