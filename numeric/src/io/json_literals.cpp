@@ -1,4 +1,5 @@
 #include "impact3d/io/json_literals.hpp"
+#include "impact3d/io/json_tree.hpp"
 
 #include <cctype>
 #include <set>
@@ -28,22 +29,27 @@ bool identifier(std::string_view key) {
   return true;
 }
 
-// Walks the same text as json::parse, enforcing the limits and recording where each number stands and
-// how it was written. The current container's path is kept in one string that grows and shrinks with
-// the nesting, so the cost stays linear in the input.
-class LiteralCollector : public nlohmann::json_sax<json> {
+// Walks the text as json::parse does, enforcing the limits with messages that name the path where the
+// problem stands, and when given a tree, building it with every number as written. The current
+// container's path is kept in one string that grows and shrinks with the nesting, so the cost stays
+// linear in the input.
+class LimitChecker : public nlohmann::json_sax<json> {
  public:
-  LiteralCollector(const std::string& root, bool keep, int depth) : root_(root), keep_(keep), depth_(depth), path_(root) {}
+  LimitChecker(const std::string& root, int depth, JsonValue* tree) : root_(root), depth_(depth), path_(root), tree_(tree) {}
 
-  std::map<std::string, std::string> literal;
-
-  bool null() override { return scalar(); }
-  bool boolean(bool) override { return scalar(); }
-  bool number_integer(number_integer_t v) override { return number(std::to_string(v)); }
-  bool number_unsigned(number_unsigned_t v) override { return number(std::to_string(v)); }
-  bool number_float(number_float_t, const string_t& s) override { return number(s); }
-  bool string(string_t&) override { return scalar(); }
-  bool binary(binary_t&) override { return scalar(); }
+  bool null() override { return scalar(JsonValue::Type::null); }
+  bool boolean(bool b) override {
+    if (JsonValue* v = add(JsonValue::Type::boolean)) v->flag = b;
+    return scalar();
+  }
+  bool number_integer(number_integer_t v) override { return number(std::to_string(v), static_cast<double>(v)); }
+  bool number_unsigned(number_unsigned_t v) override { return number(std::to_string(v), static_cast<double>(v)); }
+  bool number_float(number_float_t v, const string_t& s) override { return number(s, v); }
+  bool string(string_t& s) override {
+    if (JsonValue* v = add(JsonValue::Type::string)) v->text = s;
+    return scalar();
+  }
+  bool binary(binary_t&) override { return scalar(JsonValue::Type::null); }
   bool start_object(std::size_t) override { return open(true); }
   bool start_array(std::size_t) override { return open(false); }
   bool end_object() override { return close(); }
@@ -66,32 +72,45 @@ class LiteralCollector : public nlohmann::json_sax<json> {
  private:
   struct Frame {
     bool object;
-    bool ignored;            // below a key starting with '_'
     std::size_t index = 0;   // arrays: the index of the next element
     std::size_t path_length;  // path_ without this container
     std::string key;         // objects: the key being read
     std::set<std::string> keys;
   };
   std::string root_;
-  bool keep_;
   int depth_;
   std::vector<Frame> frames_;
   std::string path_;  // the innermost open container (the root's name outside every container)
   std::size_t values_ = 0;
+  JsonValue* tree_;                // the root, or null when no tree is built
+  std::vector<JsonValue*> open_;   // the tree's open containers
 
+  // The tree's node for the value being read: the root, or a new element or member of the innermost
+  // container. Nodes of open containers stay put: a container grows only while it is the innermost.
+  JsonValue* add(JsonValue::Type type) {
+    if (!tree_) return nullptr;
+    JsonValue* v = tree_;
+    if (!open_.empty()) {
+      JsonValue& parent = *open_.back();
+      if (parent.is(JsonValue::Type::object)) parent.keys.push_back(frames_.back().key);
+      v = &parent.items.emplace_back();
+    }
+    v->type = type;
+    return v;
+  }
   std::string child() const {
     if (frames_.empty()) return root_;
     const Frame& f = frames_.back();
     return f.object ? member_path(path_, f.key) : element_path(path_, f.index);
   }
-  bool ignored() const {
-    if (frames_.empty()) return false;
-    const Frame& f = frames_.back();
-    return f.ignored || (f.object && !f.key.empty() && f.key[0] == '_');
-  }
   void count() {
     if (++values_ > limits::kValues)
       throw CaseError(child(), fmt::format("more than {} values in one document", limits::kValues));
+  }
+  bool scalar(JsonValue::Type type) {
+    count();
+    add(type);
+    return advance();
   }
   bool scalar() {
     count();
@@ -101,43 +120,39 @@ class LiteralCollector : public nlohmann::json_sax<json> {
     if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
     return true;
   }
-  bool number(const std::string& text) {
+  bool number(const std::string& text, double value) {
     count();
     if (text.size() > limits::kLiteralChars)
       throw CaseError(child(), fmt::format("a number literal longer than {} characters", limits::kLiteralChars));
     const long e = written_exponent(text);
     if (e > limits::kExponent || e < -limits::kExponent)
       throw CaseError(child(), fmt::format("the exponent of {} is beyond +-{}", printable(text.substr(0, 40)), limits::kExponent));
-    if (keep_ && !ignored() && frames_.size() <= static_cast<std::size_t>(limits::kLiteralDepth)) literal[child()] = text;
+    if (JsonValue* v = add(JsonValue::Type::number)) v->text = text, v->number = value;
     return advance();
   }
   bool open(bool object) {
     count();
     if (frames_.size() >= static_cast<std::size_t>(depth_))
       throw CaseError(child(), fmt::format("nested deeper than {} levels", depth_));
-    const bool skip = ignored();
+    if (JsonValue* v = add(object ? JsonValue::Type::object : JsonValue::Type::array)) open_.push_back(v);
     const std::size_t length = path_.size();
     path_ = child();
-    frames_.push_back({object, skip, 0, length, "", {}});
+    frames_.push_back({object, 0, length, "", {}});
     return true;
   }
   bool close() {
     path_.resize(frames_.back().path_length);
     frames_.pop_back();
+    if (tree_) open_.pop_back();
     return advance();
   }
 };
 
-ParsedJson parse(std::string_view text, const std::string& root, bool keep, int depth) {
+void check(std::string_view text, const std::string& root, int depth, JsonValue* tree) {
   if (const auto nul = text.find('\0'); nul != std::string_view::npos)
     throw CaseError(root, fmt::format("invalid JSON: a NUL byte at offset {}", nul));
-  // The collector reads first: it enforces the limits and reports errors with the path where they stand.
-  ParsedJson out;
-  LiteralCollector collector(root, keep, depth);
-  json::sax_parse(text.begin(), text.end(), &collector);
-  out.literal = std::move(collector.literal);
-  out.doc = json::parse(text.begin(), text.end());
-  return out;
+  LimitChecker checker(root, depth, tree);
+  json::sax_parse(text.begin(), text.end(), &checker);
 }
 
 }  // namespace
@@ -150,12 +165,16 @@ std::string element_path(const std::string& parent, std::size_t index) {
   return parent + "[" + std::to_string(index) + "]";
 }
 
-ParsedJson parse_json_with_literals(std::string_view text, const std::string& root) {
-  return parse(text, root, true, limits::kDepth);
+JsonValue parse_json_tree_checked(std::string_view text, const std::string& root) {
+  JsonValue tree;
+  check(text, root, limits::kDepth, &tree);
+  return tree;
 }
 
+// The checker reads first: it enforces the limits and reports errors with the path where they stand.
 nlohmann::json parse_json_bounded(std::string_view text, const std::string& root, int depth) {
-  return parse(text, root, false, depth).doc;
+  check(text, root, depth, nullptr);
+  return json::parse(text.begin(), text.end());
 }
 
 }  // namespace impact3d::io

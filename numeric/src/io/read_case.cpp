@@ -7,8 +7,10 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <algorithm>
 #include <cstring>
-#include <set>
+#include <initializer_list>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -16,6 +18,7 @@
 #include "impact3d/io/decimal.hpp"
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/json_literals.hpp"
+#include "impact3d/io/json_tree.hpp"
 #include "impact3d/io/limits.hpp"
 #include "impact3d/io/scalar_text.hpp"
 #include "impact3d/io/strategy_kinds.hpp"
@@ -26,6 +29,7 @@ namespace impact3d::io {
 namespace {
 
 using json = nlohmann::json;
+using Type = JsonValue::Type;
 
 // Larger magnitudes are no vehicle collision and would overflow energies and products of inertia;
 // smaller non-zero ones would underflow double, so that precisions would disagree on the input itself.
@@ -34,52 +38,77 @@ const Decimal kZero{}, kOne = parse_decimal("1");
 
 Decimal decimal(const Number& n) { return parse_decimal(n.text); }
 
-const char* type_name(const json& v) {
-  switch (v.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::object: return "an object";
-    case json::value_t::array: return "an array";
-    case json::value_t::string: return "a string";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::number_integer:
-    case json::value_t::number_unsigned:
-    case json::value_t::number_float: return "a number";
-    default: return "an unsupported value";
+const char* type_name(const JsonValue& v) {
+  switch (v.type) {
+    case Type::null: return "null";
+    case Type::object: return "an object";
+    case Type::array: return "an array";
+    case Type::string: return "a string";
+    case Type::boolean: return "a boolean";
+    case Type::number: return "a number";
   }
+  return "an unsupported value";
+}
+
+// The signs of the leading minors (Sylvester) from the doubles of the literals, when rounding cannot
+// change them: each literal is within u = 2^-53 relative of its decimal (correctly rounded, in the
+// normal range by the magnitude limits, so that no product of three under- or overflows), and a sum of
+// k products of m factors computed in double is within about (m + k) u of the sum of their magnitudes
+// (Higham, Accuracy and Stability, ch. 3). 32 u covers the 2x2 minor and the determinant with room to
+// spare; within that band the exact rational decides.
+std::optional<bool> positive_definite_by_double(const std::array<Vector3, 3>& J) {
+  double a[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) a[i][j] = J[i][j].value;
+  const double u = std::ldexp(1.0, -53), band = 32 * u;
+  const double minor2 = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+  const double minor2_size = std::abs(a[0][0] * a[1][1]) + std::abs(a[0][1] * a[1][0]);
+  double det = 0, det_size = 0;
+  for (int c = 0; c < 3; ++c) {  // the six terms of the Leibniz expansion
+    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+    const double plus = a[0][c] * a[1][c1] * a[2][c2], minus = a[0][c] * a[1][c2] * a[2][c1];
+    det += plus - minus;
+    det_size += std::abs(plus) + std::abs(minus);
+  }
+  if (minor2 < -band * minor2_size || det < -band * det_size) return false;
+  if (minor2 > band * minor2_size && det > band * det_size) return true;
+  return std::nullopt;
 }
 
 class Reader {
  public:
-  explicit Reader(const ParsedJson& p) : parsed_(p) {}
 
   [[noreturn]] void fail(const std::string& ptr, const std::string& msg) const {
     throw CaseError(ptr, msg);
   }
 
-  const json& object(const json& v, const std::string& ptr, std::set<std::string> allowed) const {
-    if (!v.is_object()) fail(ptr, fmt::format("expected an object, got {}", type_name(v)));
-    for (const auto& [k, _] : v.items()) {
+  template <typename Keys>
+  const JsonValue& object(const JsonValue& v, const std::string& ptr, const Keys& allowed) const {
+    if (!v.is(Type::object)) fail(ptr, fmt::format("expected an object, got {}", type_name(v)));
+    // The first unknown key in byte order, whatever order the file has them in.
+    const std::string* unknown = nullptr;
+    for (const auto& k : v.keys) {
       if (!k.empty() && k[0] == '_') continue;  // comments and private extensions
-      if (!allowed.count(k)) fail(member_path(ptr, k), "unknown key (keys starting with '_' are ignored)");
+      if (std::find(allowed.begin(), allowed.end(), k) == allowed.end() && (!unknown || k < *unknown)) unknown = &k;
     }
+    if (unknown) fail(member_path(ptr, *unknown), "unknown key (keys starting with '_' are ignored)");
     return v;
   }
-
-  const json* optional(const json& obj, const std::string& key) const {
-    auto it = obj.find(key);
-    return it == obj.end() ? nullptr : &*it;
+  const JsonValue& object(const JsonValue& v, const std::string& ptr, std::initializer_list<std::string_view> allowed) const {
+    return object<std::initializer_list<std::string_view>>(v, ptr, allowed);
   }
 
-  const json& required(const json& obj, const std::string& ptr, const std::string& key) const {
+  const JsonValue* optional(const JsonValue& obj, std::string_view key) const { return obj.find(key); }
+
+  const JsonValue& required(const JsonValue& obj, const std::string& ptr, std::string_view key) const {
     auto* v = optional(obj, key);
     if (!v) fail(member_path(ptr, key), "missing");
     return *v;
   }
 
-  Number number(const json& v, const std::string& ptr) const {
-    if (!v.is_number()) fail(ptr, fmt::format("expected a number, got {}", type_name(v)));
-    const auto lit = parsed_.literal.find(ptr);
-    Number n{lit == parsed_.literal.end() ? v.dump() : lit->second, v.get<double>(), ptr};
+  Number number(const JsonValue& v, const std::string& ptr) const {
+    if (!v.is(Type::number)) fail(ptr, fmt::format("expected a number, got {}", type_name(v)));
+    Number n{v.text, v.number, ptr};
     if (!std::isfinite(n.value)) fail(ptr, fmt::format("not a finite number ({})", n.text));
     const Decimal d = decimal(n);
     if (compare_magnitude(d, kMax) > 0)
@@ -89,38 +118,38 @@ class Reader {
     return n;
   }
 
-  Number number_or(const json& obj, const std::string& ptr, const std::string& key) const {
+  Number number_or(const JsonValue& obj, const std::string& ptr, std::string_view key) const {
     if (auto* v = optional(obj, key)) return number(*v, member_path(ptr, key));
     return Number{"0", 0.0, member_path(ptr, key)};
   }
 
-  Number positive(const json& v, const std::string& ptr) const {
+  Number positive(const JsonValue& v, const std::string& ptr) const {
     Number n = number(v, ptr);
     if (compare(decimal(n), kZero) <= 0) fail(ptr, fmt::format("must be > 0 (got {})", n.text));
     return n;
   }
 
-  Vector3 vector3(const json& v, const std::string& ptr) const {
-    if (!v.is_array()) fail(ptr, fmt::format("expected an array of 3 numbers, got {}", type_name(v)));
+  Vector3 vector3(const JsonValue& v, const std::string& ptr) const {
+    if (!v.is(Type::array)) fail(ptr, fmt::format("expected an array of 3 numbers, got {}", type_name(v)));
     if (v.size() != 3) fail(ptr, fmt::format("expected 3 numbers, got {}", v.size()));
-    return {number(v[0], element_path(ptr, 0)), number(v[1], element_path(ptr, 1)), number(v[2], element_path(ptr, 2))};
+    return {number(v.items[0], element_path(ptr, 0)), number(v.items[1], element_path(ptr, 1)), number(v.items[2], element_path(ptr, 2))};
   }
 
-  Vector3 vector3_or_zero(const json& obj, const std::string& ptr, const std::string& key) const {
+  Vector3 vector3_or_zero(const JsonValue& obj, const std::string& ptr, std::string_view key) const {
     if (auto* v = optional(obj, key)) return vector3(*v, member_path(ptr, key));
     const std::string p = member_path(ptr, key);
     return {Number{"0", 0.0, p}, Number{"0", 0.0, p}, Number{"0", 0.0, p}};
   }
 
-  std::string string(const json& v, const std::string& ptr) const {
-    if (!v.is_string()) fail(ptr, fmt::format("expected a string, got {}", type_name(v)));
-    return v.get<std::string>();
+  std::string string(const JsonValue& v, const std::string& ptr) const {
+    if (!v.is(Type::string)) fail(ptr, fmt::format("expected a string, got {}", type_name(v)));
+    return v.text;
   }
 
-  void inertia(VehicleSpec& veh, const json& v, const std::string& ptr) const {
+  void inertia(VehicleSpec& veh, const JsonValue& v, const std::string& ptr) const {
     veh.inertia_path = ptr;
     const std::string zero_path = ptr;
-    if (v.is_object()) {
+    if (v.is(Type::object)) {
       object(v, ptr, {"Ixx", "Iyy", "Izz"});
       const char* keys[3] = {"Ixx", "Iyy", "Izz"};
       for (int i = 0; i < 3; ++i)
@@ -129,9 +158,9 @@ class Reader {
                                      : Number{"0", 0.0, zero_path};
       return;
     }
-    if (!v.is_array() || v.size() != 3)
+    if (!v.is(Type::array) || v.size() != 3)
       fail(ptr, "expected a 3x3 tensor [[Ixx, Ixy, Ixz], ...] or {\"Ixx\", \"Iyy\", \"Izz\"}");
-    for (int i = 0; i < 3; ++i) veh.inertia[i] = vector3(v[i], element_path(ptr, i));
+    for (int i = 0; i < 3; ++i) veh.inertia[i] = vector3(v.items[i], element_path(ptr, i));
     for (int i = 0; i < 3; ++i) {
       if (compare(decimal(veh.inertia[i][i]), kZero) <= 0)
         fail(ptr, fmt::format("not positive definite: diagonal entry [{}][{}] = {}", i, i, veh.inertia[i][i].text));
@@ -142,6 +171,10 @@ class Reader {
     }
     // Positive definite as written (Sylvester: the leading minors), so that every precision computes with
     // the same admissible tensor; a precision that rounds it to an indefinite one flags its results.
+    if (const auto decided = positive_definite_by_double(veh.inertia)) {
+      if (!*decided) fail(ptr, "not positive definite");
+      return;
+    }
     rational J[3][3];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) J[i][j] = scalar_from_text<rational>(veh.inertia[i][j].text);
@@ -151,27 +184,27 @@ class Reader {
     if (!(minor2 > 0) || !(det > 0)) fail(ptr, "not positive definite");
   }
 
-  VehicleSpec vehicle(const json& v, const std::string& ptr) const {
+  VehicleSpec vehicle(const JsonValue& v, const std::string& ptr) const {
     object(v, ptr, {"name", "mass", "inertia", "orientation_deg", "orientation_matrix", "velocity", "angular_velocity",
                     "impulse_center"});
     VehicleSpec veh;
     if (auto* n = optional(v, "name")) veh.name = string(*n, member_path(ptr, "name"));
     veh.mass = positive(required(v, ptr, "mass"), member_path(ptr, "mass"));
     inertia(veh, required(v, ptr, "inertia"), member_path(ptr, "inertia"));
-    static const json empty = json::object();
-    const json* o = optional(v, "orientation_deg");
-    if (const json* m = optional(v, "orientation_matrix")) {
+    static const JsonValue empty{Type::object};
+    const JsonValue* o = optional(v, "orientation_deg");
+    if (const JsonValue* m = optional(v, "orientation_matrix")) {
       const std::string mptr = member_path(ptr, "orientation_matrix");
       if (o) fail(mptr, "give either orientation_deg or orientation_matrix, not both");
-      if (!m->is_array() || m->size() != 3) fail(mptr, "expected a 3x3 rotation matrix (rows of R_WB)");
+      if (!m->is(Type::array) || m->size() != 3) fail(mptr, "expected a 3x3 rotation matrix (rows of R_WB)");
       std::array<Vector3, 3> rows;
-      for (int i = 0; i < 3; ++i) rows[i] = vector3((*m)[i], element_path(mptr, i));
+      for (int i = 0; i < 3; ++i) rows[i] = vector3(m->items[i], element_path(mptr, i));
       veh.orientation_matrix = rows;
       veh.orientation_path = mptr;
     }
     const std::string optr = member_path(ptr, "orientation_deg");
     if (o) object(*o, optr, {"yaw", "pitch", "roll"});
-    const json& orient = o ? *o : empty;
+    const JsonValue& orient = o ? *o : empty;
     veh.yaw = number_or(orient, optr, "yaw");
     veh.pitch = number_or(orient, optr, "pitch");
     veh.roll = number_or(orient, optr, "roll");
@@ -181,7 +214,7 @@ class Reader {
     return veh;
   }
 
-  ContactSpec contact(const json& v, const std::string& ptr) const {
+  ContactSpec contact(const JsonValue& v, const std::string& ptr) const {
     object(v, ptr, {"normal_yaw_deg", "normal_pitch_deg", "tangent_roll_deg", "normal", "tangent"});
     ContactSpec c;
     c.path = ptr;
@@ -201,31 +234,31 @@ class Reader {
     return c;
   }
 
-  Number non_negative(const json& obj, const std::string& ptr, const std::string& key) const {
+  Number non_negative(const JsonValue& obj, const std::string& ptr, std::string_view key) const {
     Number n = number(required(obj, ptr, key), member_path(ptr, key));
     if (compare(decimal(n), kZero) < 0) fail(member_path(ptr, key), fmt::format("must be >= 0 (got {})", n.text));
     return n;
   }
 
-  std::optional<Number> ratio_or_critical(const json& obj, const std::string& ptr, const std::string& key) const {
-    const json& v = required(obj, ptr, key);
+  std::optional<Number> ratio_or_critical(const JsonValue& obj, const std::string& ptr, std::string_view key) const {
+    const JsonValue& v = required(obj, ptr, key);
     const std::string path = member_path(ptr, key);
-    if (v.is_string()) {
-      if (v.get<std::string>() == "critical") return std::nullopt;
-      fail(path, fmt::format("expected a number or \"critical\", got {}", io::quoted(v.get<std::string>())));
+    if (v.is(Type::string)) {
+      if (v.text == "critical") return std::nullopt;
+      fail(path, fmt::format("expected a number or \"critical\", got {}", io::quoted(v.text)));
     }
-    if (!v.is_number()) fail(path, fmt::format("expected a number or \"critical\", got {}", type_name(v)));
+    if (!v.is(Type::number)) fail(path, fmt::format("expected a number or \"critical\", got {}", type_name(v)));
     return number(v, path);
   }
 
-  StrategySpec strategy(const json& v, const std::string& ptr) const {
-    if (!v.is_object()) fail(ptr, fmt::format("expected an object, got {}", type_name(v)));
+  StrategySpec strategy(const JsonValue& v, const std::string& ptr) const {
+    if (!v.is(Type::object)) fail(ptr, fmt::format("expected an object, got {}", type_name(v)));
     const std::string name = string(required(v, ptr, "name"), member_path(ptr, "name"));
     const auto kind = find_strategy_kind(name);
     if (!kind) fail(member_path(ptr, "name"), fmt::format("unknown strategy {} (expected {})", io::quoted(name), strategy_kind_names()));
     const KindRow row = strategy_kind(*kind);
-    std::set<std::string> keys{"name"};
-    for (const auto& p : row.parameters) keys.emplace(p.key);
+    std::vector<std::string_view> keys{"name"};
+    for (const auto& p : row.parameters) keys.emplace_back(p.key);
     object(v, ptr, keys);
     StrategySpec s;
     s.kind = *kind;
@@ -248,8 +281,7 @@ class Reader {
     return s;
   }
 
-  CaseSpec read() const {
-    const json& root = parsed_.doc;
+  CaseSpec read(const JsonValue& root) const {
     object(root, "$", {"name", "description", "units", "vehicles", "contact", "restitution", "strategy"});
     CaseSpec c;
     if (auto* n = optional(root, "name")) c.name = string(*n, "$.name");
@@ -259,29 +291,27 @@ class Reader {
       if (units == "US") c.units = Units::US;
       else if (units != "SI") fail("$.units", fmt::format("unknown unit system {} (expected \"SI\" or \"US\")", io::quoted(units)));
     }
-    const json& vs = required(root, "$", "vehicles");
-    if (!vs.is_array()) fail("$.vehicles", fmt::format("expected an array of 2 vehicles, got {}", type_name(vs)));
+    const JsonValue& vs = required(root, "$", "vehicles");
+    if (!vs.is(Type::array)) fail("$.vehicles", fmt::format("expected an array of 2 vehicles, got {}", type_name(vs)));
     if (vs.size() != 2) fail("$.vehicles", fmt::format("expected 2 vehicles, got {}", vs.size()));
-    for (int i = 0; i < 2; ++i) c.vehicles[i] = vehicle(vs[i], element_path("$.vehicles", i));
+    for (int i = 0; i < 2; ++i) c.vehicles[i] = vehicle(vs.items[i], element_path("$.vehicles", i));
     c.contact = contact(required(root, "$", "contact"), "$.contact");
     c.restitution = number(required(root, "$", "restitution"), "$.restitution");
     const Decimal e = decimal(c.restitution);
     if (compare(e, kZero) < 0 || compare(e, kOne) > 0)
       fail("$.restitution", fmt::format("must be in [0, 1] (got {})", c.restitution.text));
-    const json& st = required(root, "$", "strategy");
-    if (st.is_array()) {
-      if (st.empty()) fail("$.strategy", "empty array: give at least one strategy");
+    const JsonValue& st = required(root, "$", "strategy");
+    if (st.is(Type::array)) {
+      if (st.items.empty()) fail("$.strategy", "empty array: give at least one strategy");
       if (st.size() > limits::kStrategies) fail("$.strategy", fmt::format("more than {} strategies", limits::kStrategies));
       c.strategy_is_array = true;
-      for (std::size_t i = 0; i < st.size(); ++i) c.strategies.push_back(strategy(st[i], element_path("$.strategy", i)));
+      for (std::size_t i = 0; i < st.size(); ++i) c.strategies.push_back(strategy(st.items[i], element_path("$.strategy", i)));
     } else {
       c.strategies.push_back(strategy(st, "$.strategy"));
     }
     return c;
   }
 
- private:
-  const ParsedJson& parsed_;
 };
 
 }  // namespace
@@ -309,8 +339,7 @@ StrategySpec read_strategy_option(const std::string& text, int index) {
     }
     doc += "}";
   }
-  const ParsedJson parsed = parse_json_with_literals(doc, label);
-  return Reader(parsed).strategy(parsed.doc, label);
+  return Reader().strategy(parse_json_tree(doc, label), label);
 }
 
 std::string read_text_file(const std::string& path, std::size_t max_bytes) {
@@ -350,8 +379,7 @@ CaseError no_solution(const CaseSpec& spec, const SolveError& e) {
 }
 
 CaseSpec read_case(const std::string& json_text) {
-  const ParsedJson parsed = parse_json_with_literals(json_text);
-  return Reader(parsed).read();
+  return Reader().read(parse_json_tree(json_text));
 }
 
 }  // namespace impact3d::io

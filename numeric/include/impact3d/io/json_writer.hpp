@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace impact3d::io {
@@ -17,15 +18,34 @@ class JsonWriter {
   void end_object() { close('}'); }
   void begin_array() { open('['); }
   void end_array() { close(']'); }
-  JsonWriter& key(const std::string& k) {
+  JsonWriter& key(std::string_view k) {
     item();
     append_quoted(out_, k);
     out_ += ": ";
     pending_key_ = true;
     return *this;
   }
-  void raw(const std::string& number_text) { value(finite(number_text)); }
-  void string(const std::string& s) {
+  void raw(std::string_view number_text) { value(finite(number_text)); }
+  // A number whose text `format(std::string&)` appends in place, so that no string is made per number.
+  template <typename Format>
+  void number(Format&& format) {
+    item();
+    pending_key_ = false;
+    append_number(format);
+  }
+  // A short array of `n` numbers on one line, element i appended by `format(std::string&, i)`.
+  template <typename Format>
+  void number_row(int n, Format&& format) {
+    item();
+    pending_key_ = false;
+    out_ += '[';
+    for (int i = 0; i < n; ++i) {
+      if (i) out_ += ", ";
+      append_number([&](std::string& out) { format(out, i); });
+    }
+    out_ += ']';
+  }
+  void string(std::string_view s) {
     item();
     pending_key_ = false;
     append_quoted(out_, s);
@@ -34,33 +54,40 @@ class JsonWriter {
   void null() { value("null"); }
   // A short array of numbers on one line.
   void number_array(const std::vector<std::string>& items) {
-    std::string line = "[";
-    for (std::size_t i = 0; i < items.size(); ++i) {
-      line += (i ? ", " : "") + finite(items[i]);
-    }
-    value(line + "]");
+    number_row(static_cast<int>(items.size()), [&](std::string& out, int i) { out += items[i]; });
   }
-  std::string str() const { return out_ + "\n"; }
+  std::string str() && {
+    out_ += '\n';
+    return std::move(out_);
+  }
+  std::string str() const& { return out_ + "\n"; }
 
-  static std::string quote(const std::string& s) {
+  static std::string quote(std::string_view s) {
     std::string q;
     append_quoted(q, s);
     return q;
   }
 
-  static void append_quoted(std::string& q, const std::string& s) {
+  static void append_quoted(std::string& q, std::string_view s) {
     q += '"';
-    for (unsigned char c : s) {
+    // Runs of characters that need no escape are copied whole.
+    std::size_t run = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const unsigned char c = static_cast<unsigned char>(s[i]);
+      if (c >= 0x20 && c != '"' && c != '\\') continue;
+      q.append(s.substr(run, i - run));
+      run = i + 1;
       if (c == '"') q += "\\\"";
       else if (c == '\\') q += "\\\\";
       else if (c == '\n') q += "\\n";
-      else if (c < 0x20) {
+      else {
         static const char* hex = "0123456789abcdef";
         q += "\\u00";
         q += hex[c >> 4];
         q += hex[c & 15];
-      } else q += static_cast<char>(c);
+      }
     }
+    q.append(s.substr(run));
     q += '"';
   }
 
@@ -70,9 +97,20 @@ class JsonWriter {
   bool pending_key_ = false;
   bool one_line_;
 
-  static std::string finite(const std::string& number_text) {
-    if (number_text.find_first_of("ni") != std::string::npos) return "null";  // inf, nan
+  static std::string_view finite(std::string_view number_text) {
+    if (number_text.find_first_of("ni") != std::string_view::npos) return "null";  // inf, nan
     return number_text;
+  }
+  template <typename Format>
+  void append_number(Format&& format) {
+    const std::size_t at = out_.size();
+    format(out_);
+    for (std::size_t i = at; i < out_.size(); ++i)
+      if (out_[i] == 'n' || out_[i] == 'i') {  // inf, nan
+        out_.resize(at);
+        out_ += "null";
+        return;
+      }
   }
   void item() {
     if (pending_key_) return;
@@ -87,7 +125,7 @@ class JsonWriter {
     out_ += '\n';
     out_.append(2 * depth, ' ');
   }
-  void value(const std::string& text) {
+  void value(std::string_view text) {
     item();
     pending_key_ = false;
     out_ += text;

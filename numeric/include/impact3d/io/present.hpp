@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/scalar_text.hpp"
 #include "impact3d/numeric/types.hpp"
 #include "impact3d/numeric/units.hpp"
@@ -22,6 +23,14 @@ struct Present {
   std::string num(const Scalar& x, const Scalar& factor) const { return num(Scalar(x / factor)); }
   std::vector<std::string> vec(const Vec3<Scalar>& v, const Scalar& factor) const {
     return {num(v.x(), factor), num(v.y(), factor), num(v.z(), factor)};
+  }
+  // The same text written straight into a document.
+  void put(JsonWriter& w, const Scalar& x) const {
+    w.number([&](std::string& out) { append_scalar(out, x, digits); });
+  }
+  void put(JsonWriter& w, const Scalar& x, const Scalar& factor) const { put(w, Scalar(x / factor)); }
+  void put_vec(JsonWriter& w, const Vec3<Scalar>& v, const Scalar& factor) const {
+    w.number_row(3, [&](std::string& out, int i) { append_scalar(out, Scalar(v[i] / factor), digits); });
   }
 };
 

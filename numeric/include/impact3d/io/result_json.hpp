@@ -14,9 +14,9 @@ namespace impact3d::io {
 inline void write_strategy_echo(JsonWriter& w, const StrategySpec& s) {
   const KindRow row = strategy_kind(s.kind);
   w.begin_object();
-  w.key("name").string(std::string(row.name));
+  w.key("name").string(row.name);
   for (const auto& p : row.parameters) {
-    w.key(std::string(p.key));
+    w.key(p.key);
     if (p.type == ParameterType::choice) w.string(s.choice(p.key));
     else if (const auto& n = s.number(p.key)) w.raw(n->text);
     else w.string("critical");
@@ -25,14 +25,14 @@ inline void write_strategy_echo(JsonWriter& w, const StrategySpec& s) {
 }
 
 template <typename Scalar>
-void write_optional(JsonWriter& w, const std::string& key, const std::optional<Scalar>& v, const Present<Scalar>& p) {
-  if (v) w.key(key).raw(p.num(*v));
+void write_optional(JsonWriter& w, std::string_view key, const std::optional<Scalar>& v, const Present<Scalar>& p) {
+  if (v) p.put(w.key(key), *v);
 }
 
 template <typename Scalar>
 void write_matrix(JsonWriter& w, const Mat3<Scalar>& m, const Present<Scalar>& p) {
   w.begin_array();
-  for (int k = 0; k < 3; ++k) w.number_array(p.vec(m.row(k).transpose(), Scalar(1)));
+  for (int k = 0; k < 3; ++k) p.put_vec(w, m.row(k).transpose(), Scalar(1));
   w.end_array();
 }
 
@@ -42,11 +42,14 @@ template <typename Scalar>
 void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* veh, const Solution<Scalar>& s,
                     const Present<Scalar>& p, bool snap) {
   const auto& f = p.f;
-  auto vel = [&](const Scalar& v) {
+  auto snapped = [&](const Scalar& v) {
     using std::abs;
-    return snap && abs(v) <= s.velocity_roundoff ? std::string("0") : p.num(v, f.velocity);
+    return snap && abs(v) <= s.velocity_roundoff;
   };
-  auto vel3 = [&](const Vec3<Scalar>& v) { return std::vector<std::string>{vel(v.x()), vel(v.y()), vel(v.z())}; };
+  auto vel = [&](JsonWriter& to, const Scalar& v) {
+    if (snapped(v)) to.raw("0");
+    else p.put(to, v, f.velocity);
+  };
   const auto& imp = s.impulse;
   w.begin_object();
   w.key("strategy");
@@ -63,23 +66,26 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   write_optional(w, "mu_t_critical", imp.mu_t_critical, p);
   write_optional(w, "mu_z_critical", imp.mu_z_critical, p);
   w.end_object();
-  if (imp.plane_angle_deg) w.key("plane_angle_deg").raw(p.num(*imp.plane_angle_deg));
+  if (imp.plane_angle_deg) p.put(w.key("plane_angle_deg"), *imp.plane_angle_deg);
   w.key("impulse").begin_object();
-  w.key("contact").number_array(p.vec(imp.P_C, f.impulse));
-  w.key("world").number_array(p.vec(s.P_W, f.impulse));
+  p.put_vec(w.key("contact"), imp.P_C, f.impulse);
+  p.put_vec(w.key("world"), s.P_W, f.impulse);
   w.end_object();
   w.key("relative_velocity").begin_object();
-  w.key("before").number_array(p.vec(s.V_ri, f.velocity));
-  w.key("after").number_array(vel3(s.V_rf));
+  p.put_vec(w.key("before"), s.V_ri, f.velocity);
+  w.key("after").number_row(3, [&](std::string& out, int i) {
+    if (snapped(s.V_rf[i])) out += '0';
+    else append_scalar(out, Scalar(s.V_rf[i] / f.velocity), p.digits);
+  });
   w.end_object();
   w.key("sliding").begin_object();
-  w.key("before").raw(p.num(s.sliding_before, f.velocity));
-  w.key("after").raw(vel(s.sliding_after));
-  if (s.swerve_deg) w.key("swerve_angle_deg").raw(p.num(*s.swerve_deg)); else w.key("swerve_angle_deg").null();
-  if (s.swerve_speed) w.key("swerve_speed").raw(vel(*s.swerve_speed)); else w.key("swerve_speed").null();
+  p.put(w.key("before"), s.sliding_before, f.velocity);
+  vel(w.key("after"), s.sliding_after);
+  if (s.swerve_deg) p.put(w.key("swerve_angle_deg"), *s.swerve_deg); else w.key("swerve_angle_deg").null();
+  if (s.swerve_speed) vel(w.key("swerve_speed"), *s.swerve_speed); else w.key("swerve_speed").null();
   w.end_object();
   w.key("impulse_space").begin_object();
-  w.key("restitution_effective").raw(p.num(s.restitution_effective));
+  p.put(w.key("restitution_effective"), s.restitution_effective);
   w.key("t_sliding").string(axis_change_name(s.t_change));
   w.key("z_sliding").string(axis_change_name(s.z_change));
   w.key("volume").string(s.volume);
@@ -89,21 +95,21 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
     const auto& c = s.change[i];
     w.begin_object();
     w.key("name").string(veh[i].name);
-    w.key("velocity").number_array(p.vec(s.after[i].v_W, f.velocity));
-    w.key("angular_velocity").number_array(p.vec(s.after[i].w_B, f.angular_velocity));
-    w.key("delta_v").number_array(p.vec(c.dv_W, f.velocity));
-    w.key("delta_v_magnitude").raw(p.num(c.dv, f.velocity));
-    if (c.pdof_deg) w.key("pdof_deg").raw(p.num(*c.pdof_deg)); else w.key("pdof_deg").null();
-    if (c.clock) w.key("pdof_clock").raw(std::to_string(*c.clock)); else w.key("pdof_clock").null();
+    p.put_vec(w.key("velocity"), s.after[i].v_W, f.velocity);
+    p.put_vec(w.key("angular_velocity"), s.after[i].w_B, f.angular_velocity);
+    p.put_vec(w.key("delta_v"), c.dv_W, f.velocity);
+    p.put(w.key("delta_v_magnitude"), c.dv, f.velocity);
+    if (c.pdof_deg) p.put(w.key("pdof_deg"), *c.pdof_deg); else w.key("pdof_deg").null();
+    if (c.clock) w.key("pdof_clock").number([&](std::string& out) { out += std::to_string(*c.clock); }); else w.key("pdof_clock").null();
     w.end_object();
   }
   w.end_array();
   w.key("energy").begin_object();
-  w.key("before").raw(p.num(s.energy_before, f.energy));
-  w.key("after").raw(p.num(s.energy_after, f.energy));
-  w.key("loss").raw(p.num(s.energy_loss, f.energy));
+  p.put(w.key("before"), s.energy_before, f.energy);
+  p.put(w.key("after"), s.energy_after, f.energy);
+  p.put(w.key("loss"), s.energy_loss, f.energy);
   w.end_object();
-  w.key("rounding_bound").raw(scalar_to_text(s.rounding_bound, 3));
+  w.key("rounding_bound").number([&](std::string& out) { append_scalar(out, s.rounding_bound, 3); });
   w.key("warnings").begin_array();
   for (const auto& warning : s.warnings) w.string(warning.text);
   w.end_array();
@@ -127,32 +133,32 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   w.key("precision").string(precision);
   w.key("engine").string(engine_name(a.engine));
   w.key("coefficients").begin_object();
-  w.key("m_prime").raw(p.num(a.m_prime, f.mass));
+  p.put(w.key("m_prime"), a.m_prime, f.mass);
   w.key("K");
   write_matrix(w, a.K, p);
-  w.key("det_K").raw(p.num(Scalar(a.K.determinant())));
-  w.key("condition_K").raw(p.num(a.kappa));
+  p.put(w.key("det_K"), Scalar(a.K.determinant()));
+  p.put(w.key("condition_K"), a.kappa);
   w.key("T").begin_array();
   for (int i = 0; i < 2; ++i) write_matrix(w, a.T[i], p);
   w.end_array();
   w.end_object();
   w.key("impulse_space").begin_object();
-  w.key("max_energy_loss_impulse").number_array(p.vec(a.space.P_max_loss, f.impulse));
+  p.put_vec(w.key("max_energy_loss_impulse"), a.space.P_max_loss, f.impulse);
   w.key("critical_impulse_line").begin_object();
-  w.key("point").number_array(p.vec(a.space.P_max_loss, f.impulse));
-  w.key("direction").number_array(p.vec(a.space.cil_direction, Scalar(1)));
+  p.put_vec(w.key("point"), a.space.P_max_loss, f.impulse);
+  p.put_vec(w.key("direction"), a.space.cil_direction, Scalar(1));
   w.end_object();
   w.key("planes").begin_object();
   const char* names[3] = {"max_compression", "t_no_sliding", "z_no_sliding"};
   for (int k = 0; k < 3; ++k) {
     w.key(names[k]).begin_object();
-    w.key("normal").number_array(p.vec(a.space.plane_normal.row(k).transpose(), Scalar(1)));
-    w.key("offset").raw(p.num(a.space.plane_offset(k), f.impulse));
+    p.put_vec(w.key("normal"), a.space.plane_normal.row(k).transpose(), Scalar(1));
+    p.put(w.key("offset"), a.space.plane_offset(k), f.impulse);
     w.end_object();
   }
   w.key("restitution").begin_object();
-  w.key("normal").number_array(p.vec(a.space.plane_normal.row(0).transpose(), Scalar(1)));
-  w.key("offset").raw(p.num(a.space.restitution_offset, f.impulse));
+  p.put_vec(w.key("normal"), a.space.plane_normal.row(0).transpose(), Scalar(1));
+  p.put(w.key("offset"), a.space.restitution_offset, f.impulse);
   w.end_object();
   w.end_object();
   w.end_object();
@@ -162,7 +168,7 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   w.end_array();
   if (extra) extra(w);
   w.end_object();
-  return w.str();
+  return std::move(w).str();
 }
 
 }  // namespace impact3d::io

@@ -41,21 +41,32 @@ Scalar scalar_from_text(const std::string& text) {
   }
 }
 
-// Every significant digit the type holds (max_digits10: 17 for double), so the text reads back exactly.
-// The standard types go through std::to_chars, which formats as printf's %.Ng does, the same text a
-// classic-locale stream prints, at a twentieth of the cost; the multiprecision types through a stream.
+// Every significant digit the type holds (max_digits10: 17 for double), so the text reads back exactly,
+// appended to `out`. The standard types go through std::to_chars, which formats as printf's %.Ng does,
+// the same text a classic-locale stream prints, at a twentieth of the cost; the multiprecision types
+// through a stream.
 template <typename Scalar>
-std::string scalar_to_text(const Scalar& x, int digits = std::max(std::numeric_limits<Scalar>::max_digits10, 1)) {
+void append_scalar(std::string& out, const Scalar& x, int digits = std::max(std::numeric_limits<Scalar>::max_digits10, 1)) {
   if constexpr (std::is_same_v<Scalar, double> || std::is_same_v<Scalar, long double>) {
     char buf[128];
     const auto r = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, digits);
-    if (r.ec == std::errc()) return std::string(buf, r.ptr);
+    if (r.ec == std::errc()) {
+      out.append(buf, r.ptr);
+      return;
+    }
   }
   std::ostringstream os;
   os.imbue(std::locale::classic());
   os.precision(digits);
   os << x;
-  return os.str();
+  out += os.str();
+}
+
+template <typename Scalar>
+std::string scalar_to_text(const Scalar& x, int digits = std::max(std::numeric_limits<Scalar>::max_digits10, 1)) {
+  std::string out;
+  append_scalar(out, x, digits);
+  return out;
 }
 
 }  // namespace impact3d::io

@@ -1,0 +1,42 @@
+// A parsed JSON document that keeps every number as it is written, so that each precision converts the
+// decimal of the file and never a rounded double (case_spec.hpp). The case reader walks this tree.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impact3d::io {
+
+struct JsonValue {
+  enum class Type : unsigned char { null, boolean, number, string, array, object };
+  Type type = Type::null;
+  bool flag = false;              // booleans
+  double number = 0;              // numbers: the value, for validation and messages
+  std::string text;               // numbers: the literal; strings: the value (unescaped UTF-8)
+  std::vector<JsonValue> items;   // arrays: the elements; objects: the members' values
+  std::vector<std::string> keys;  // objects: the members' keys, in the order written (no duplicates)
+
+  bool is(Type t) const { return type == t; }
+  std::size_t size() const { return items.size(); }
+  const JsonValue* find(std::string_view key) const {
+    for (std::size_t i = 0; i < keys.size(); ++i)
+      if (keys[i] == key) return &items[i];
+    return nullptr;
+  }
+};
+
+// Parses `text` within the input limits (limits.hpp). simdjson reads it when it is valid JSON within
+// every limit; anything else is read again by the checking parser (json_literals.hpp), whose message
+// names the JSON path where the problem stands (`root` is the root's name: "$", or "--strategy[0]").
+// Both readers give the same tree for every document they accept (check_json_tree). Throws CaseError.
+JsonValue parse_json_tree(std::string_view text, const std::string& root = "$");
+
+// The checking parser alone (what parse_json_tree falls back to).
+JsonValue parse_json_tree_checked(std::string_view text, const std::string& root = "$");
+
+// simdjson alone: false when it refuses the text or the text reaches a limit, a duplicate key or a
+// string that is not valid UTF-8 (left for the checking parser to name).
+bool parse_json_tree_fast(std::string_view text, JsonValue& out);
+
+}  // namespace impact3d::io

@@ -1,0 +1,113 @@
+// The fast reader accepts only what it can vouch for: simdjson's strict parse (dom) validates the whole
+// text, then its On Demand walk reads each number's literal; a limit reached, a duplicate key, a string
+// that is not valid UTF-8 or anything simdjson refuses is left to the checking parser, whose messages
+// name the path. So the fast reader never decides what a message says, only that none is needed.
+#include "impact3d/io/json_tree.hpp"
+
+#include <simdjson.h>
+
+#include "impact3d/io/decimal.hpp"
+#include "impact3d/io/limits.hpp"
+
+namespace impact3d::io {
+namespace {
+
+namespace od = simdjson::ondemand;
+
+struct Walk {
+  std::size_t values = 0;
+
+  // Below the checker's limits with a margin, so that the checker alone judges every text near one.
+  bool within(std::size_t depth) const { return values < limits::kValues && depth + 1 < static_cast<std::size_t>(limits::kDepth); }
+
+  bool value(od::value v, JsonValue& out, std::size_t depth) {
+    ++values;
+    if (!within(depth)) return false;
+    od::json_type type;
+    if (v.type().get(type)) return false;
+    switch (type) {
+      case od::json_type::null: {
+        bool null = false;
+        if (v.is_null().get(null) || !null) return false;
+        out.type = JsonValue::Type::null;
+        return true;
+      }
+      case od::json_type::boolean:
+        out.type = JsonValue::Type::boolean;
+        return !v.get_bool().get(out.flag);
+      case od::json_type::number: return number(v, out);
+      case od::json_type::string: {
+        std::string_view s;
+        if (v.get_string().get(s) || !simdjson::validate_utf8(s.data(), s.size())) return false;
+        out.type = JsonValue::Type::string;
+        out.text.assign(s);
+        return true;
+      }
+      case od::json_type::array: {
+        od::array a;
+        if (v.get_array().get(a)) return false;
+        out.type = JsonValue::Type::array;
+        for (auto element : a) {
+          od::value e;
+          if (element.get(e) || !value(e, out.items.emplace_back(), depth + 1)) return false;
+        }
+        return true;
+      }
+      case od::json_type::object: {
+        od::object o;
+        if (v.get_object().get(o)) return false;
+        out.type = JsonValue::Type::object;
+        for (auto field : o) {
+          std::string_view key;
+          if (field.unescaped_key().get(key)) return false;
+          if (key.size() > limits::kKeyChars || !simdjson::validate_utf8(key.data(), key.size()) || out.find(key)) return false;
+          out.keys.emplace_back(key);
+          if (!value(field.value(), out.items.emplace_back(), depth + 1)) return false;
+        }
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // The literal as nlohmann reports it, so that both readers agree: an integer as std::to_string prints
+  // it (which differs from the text only for "-0").
+  static bool number(od::value v, JsonValue& out) {
+    std::string_view raw = v.raw_json_token();
+    while (!raw.empty() && (raw.back() == ' ' || raw.back() == '\t' || raw.back() == '\n' || raw.back() == '\r')) raw.remove_suffix(1);
+    if (raw.size() > limits::kLiteralChars) return false;
+    const long e = written_exponent(raw);
+    if (e > limits::kExponent || e < -limits::kExponent) return false;
+    double x;
+    if (v.get_double().get(x)) return false;
+    out.type = JsonValue::Type::number;
+    if (raw == "-0") raw = "0", x = 0;
+    out.text.assign(raw);
+    out.number = x;
+    return true;
+  }
+};
+
+}  // namespace
+
+bool parse_json_tree_fast(std::string_view text, JsonValue& out) {
+  if (text.size() > limits::kCaseFileBytes) return false;
+  thread_local simdjson::dom::parser strict;
+  thread_local od::parser reader;
+  const simdjson::padded_string padded(text);
+  if (strict.parse(padded).error()) return false;
+  od::document doc;
+  if (reader.iterate(padded).get(doc)) return false;
+  od::value root;
+  if (doc.get_value().get(root)) return false;
+  Walk walk;
+  return walk.value(root, out, 0);  // the strict parse has seen that nothing follows the root
+}
+
+JsonValue parse_json_tree(std::string_view text, const std::string& root) {
+  JsonValue tree;
+  if (parse_json_tree_fast(text, tree)) return tree;
+  return parse_json_tree_checked(text, root);
+}
+
+}  // namespace impact3d::io
