@@ -10,6 +10,7 @@
 
 #include "impact3d/numeric/analysis.hpp"
 #include "impact3d/numeric/batch/columns.hpp"
+#include "impact3d/numeric/multiprecision.hpp"
 #include "peer_collisions.hpp"
 
 using namespace impact3d;
@@ -60,6 +61,24 @@ void pc_crash_lean(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
 }
 
+// At 100 digits (MPFR, numbers in the object rather than on the heap): the first 64 collisions, their
+// raw parameters the same decimals (a double converts exactly).
+template <bool Lean>
+void pc_crash_100(benchmark::State& state) {
+  using F = mp::float100;
+  const auto& cs = cases();
+  std::vector<RawCollision<F>> raw;
+  for (std::size_t k = 0; k < 64; ++k) raw.push_back(bench::raw_as<F>(raw_cases()[k]));
+  for (auto _ : state)
+    for (std::size_t k = 0; k < raw.size(); ++k) {
+      if constexpr (Lean)
+        benchmark::DoNotOptimize(solve_lean(scene_of(raw[k]), Strategy<F>(PcCrash<F>{F(cs[k].mu)}), Want::impulse, Engine::generated));
+      else
+        benchmark::DoNotOptimize(analyze(scene_of(raw[k]), {PcCrash<F>{F(cs[k].mu)}}, Engine::generated));
+    }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
+}
+
 // The same collisions as columns, solved on the lanes of one instruction set (the argument's index into
 // batch::simd_available(), widest first).
 void pc_crash_simd(benchmark::State& state) {
@@ -93,3 +112,5 @@ BENCHMARK(pc_crash_lean<Engine::generated, Want::velocities>);
 BENCHMARK(pc_crash_naive);
 BENCHMARK(pc_crash_analyze<Engine::generated>);
 BENCHMARK(pc_crash_analyze<Engine::direct>);
+BENCHMARK(pc_crash_100<true>)->Name("pc_crash_lean_100_digits");
+BENCHMARK(pc_crash_100<false>)->Name("pc_crash_analyze_100_digits");

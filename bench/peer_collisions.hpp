@@ -31,6 +31,20 @@ inline RawCollision<double> raw_of(const NaiveCase& c) {
   return r;
 }
 
+// The same raw parameters in another scalar (from double: exactly).
+template <typename To>
+RawCollision<To> raw_as(const RawCollision<double>& r) {
+  RawCollision<To> out;
+  for (int i = 0; i < 2; ++i) {
+    const RawVehicle<double>& v = r.vehicle[i];
+    out.vehicle[i] = {To(v.mass), v.J_B.cast<To>(), To(v.yaw_deg), To(v.pitch_deg), To(v.roll_deg),
+                      v.v_W.cast<To>(), v.w_B.cast<To>(), v.p_CgIc_B.cast<To>()};
+  }
+  out.normal_yaw_deg = To(r.normal_yaw_deg), out.normal_pitch_deg = To(r.normal_pitch_deg);
+  out.tangent_roll_deg = To(r.tangent_roll_deg), out.restitution = To(r.restitution);
+  return out;
+}
+
 // The scene impact3d builds from them, rotations by rotation_zyx_deg as a case file's are.
 inline Scene<double> scene_of(const NaiveCase& c) {
   const RawCollision<double> r = raw_of(c);

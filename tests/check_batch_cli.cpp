@@ -214,3 +214,129 @@ TEST_CASE("batch stopped midway by SIGTERM leaves only whole rows, numbered from
   CHECK(std::stoul(m[2]) + std::stoul(m[3]) == rows.size());
   fs::remove_all(dir);
 }
+
+namespace {
+
+// RFC 4180 cells of one line, written here independently of the program's reader.
+std::vector<std::string> csv_cells(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') cells.back() += '"', ++i;
+      else if (c == '"') quoted = false;
+      else cells.back() += c;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      cells.emplace_back();
+    } else {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
+
+// "vehicles[1].delta_v[2]" -> /vehicles/1/delta_v/2
+json::json_pointer pointer_of(const std::string& path) {
+  std::string p = "/";
+  for (char c : path) p += c == '.' || c == '[' ? '/' : c == ']' ? '\0' : c;
+  p.erase(std::remove(p.begin(), p.end(), '\0'), p.end());
+  return json::json_pointer(p);
+}
+
+}  // namespace
+
+TEST_CASE("batch reads a CSV whose header names case paths, and writes solve's numbers as CSV", "[batch]") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-csv-{}", ::getpid());
+  fs::create_directories(dir);
+  const std::string variants = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_variants.csv";
+
+  // Row 2 of the bundled CSV is this case, written by hand from its columns.
+  const fs::path hand = dir / "row2.json";
+  std::ofstream(hand) << R"x({"name": "Figure 8, 25 mph each", "vehicles": [
+    {"name": "Malibu", "mass": 1560, "inertia": [[560, 0, -40], [0, 2500, 0], [-40, 0, 2700]], "velocity": [11.176, 0, 0],
+     "impulse_center": [0.35, -0.9, 0.05]},
+    {"name": "Suburban", "mass": 2600, "inertia": {"Ixx": 1100, "Iyy": 5600, "Izz": 5900}, "orientation_deg": {"yaw": 90},
+     "velocity": [0, 11.176, 0], "impulse_center": [2.6, 0.2, -0.15]}],
+  "contact": {"normal_yaw_deg": 90}, "restitution": 0.1,
+  "strategy": [{"name": "pc-crash", "mu": 0.5}, {"name": "brach", "mu_t": "critical", "mu_z": "critical"}]})x";
+  const Run solved = run_argv({"solve", hand.string(), "--format", "json"});
+  REQUIRE(solved.status == 0);
+
+  const Run jsonl = run_argv({"batch", variants, "--jobs", "2"});
+  INFO(jsonl.err);
+  CHECK(jsonl.status == 1);
+  CHECK(jsonl.err.find("3 rows read, 2 solved, 1 rejected") != std::string::npos);
+  const auto rows = lines_of(jsonl.out);
+  REQUIRE(rows.size() == 3);
+  const std::string prefix = "{\"line\": 2, ";
+  REQUIRE(rows[0].rfind(prefix, 0) == 0);
+  CHECK(tokens("{" + rows[0].substr(prefix.size())) == tokens(solved.out));
+  CHECK(json::parse(rows[1]).at("results").size() == 1);  // its second strategy's cells are empty
+  CHECK(rows[2] == R"x({"line": 4, "error": "$.vehicles[0].mass: must be > 0 (got -1560)"})x");
+
+  // CSV out: one row per result, every column the document's value at its path.
+  const Run table = run_argv({"batch", variants, "--format", "csv"});
+  CHECK(table.status == 1);
+  const auto lines = lines_of(table.out);
+  REQUIRE(lines.size() == 1 + 2 + 1 + 1);
+  const auto header = csv_cells(lines[0]);
+  REQUIRE(header.size() > 60);
+  int compared = 0;
+  for (std::size_t r = 1; r < lines.size(); ++r) {
+    const auto cells = csv_cells(lines[r]);
+    REQUIRE(cells.size() == header.size());
+    const long line = std::stol(cells[0]);
+    const json doc = json::parse(rows.at(static_cast<std::size_t>(line - 2)));
+    if (!cells[2].empty()) {
+      CHECK(cells[2] == doc.at("error").get<std::string>());
+      CHECK(cells[1].empty());
+      continue;
+    }
+    const json& result = doc.at("results").at(std::stoul(cells[1]));
+    for (std::size_t c = 3; c < header.size(); ++c) {
+      const std::string& name = header[c];
+      if (name == "strategy" || name == "warnings") continue;
+      const bool of_document = name == "name" || name == "units" || name == "precision" || name == "engine";
+      const json& from = of_document ? doc : result;
+      const auto ptr = pointer_of(name);
+      INFO(name);
+      if (!from.contains(ptr) || from.at(ptr).is_null()) {
+        CHECK(cells[c].empty());
+      } else if (from.at(ptr).is_string()) {
+        CHECK(cells[c] == from.at(ptr).get<std::string>());
+      } else {
+        CHECK(std::stod(cells[c]) == from.at(ptr).get<double>());  // 17 digits read back to the same double
+      }
+      ++compared;
+    }
+    CHECK(cells[header.size() - 1].empty() == result.at("warnings").empty());
+  }
+  CHECK(compared > 3 * 60);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("batch refuses a CSV header that does not spell a case's paths", "[batch]") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-csvh-{}", ::getpid());
+  fs::create_directories(dir);
+  const std::vector<std::pair<std::string, std::string>> headers = {
+      {"name,vehicles[0].mass[", "header column 2 (\"vehicles[0].mass[\"): expected an index [n] in the path"},
+      {"name,vehicles[1].mass", "header: no column for $.vehicles[0]"},
+      {"name,name", "header column 2 (\"name\"): the same field as another column, or a field another column is inside"},
+      {"vehicles.x,vehicles[0]", "header column 2 (\"vehicles[0]\"): an index where another column has a key"},
+      {"strategy[64].name", "header column 1 (\"strategy[64].name\"): an index beyond 63"}};
+  int checked = 0;
+  for (const auto& [header, problem] : headers) {
+    const fs::path f = dir / "cases.csv";
+    std::ofstream(f, std::ios::binary) << header << "\n1,2\n";
+    const Run r = run_argv({"batch", f.string()});
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err == fmt::format("impact3d: error: {}: line 1: {}\n", f.string(), problem));
+    ++checked;
+  }
+  CHECK(checked == 5);
+  fs::remove_all(dir);
+}

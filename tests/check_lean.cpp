@@ -2,7 +2,7 @@
 // impulse, the regime, the ratios and the post-impact velocities must be equal bit for bit, and the
 // warnings the same codes, although the lean path bounds the condition of K instead of computing it
 // and computes it only when a decision falls within the bound. Seeded random collisions, every
-// strategy, both engines, double and long double; the lanes of ordinary outcomes (not approaching, a
+// strategy, both engines, double, long double and 100 digits; the lanes of ordinary outcomes (not approaching, a
 // singular system) become a status, and no case allocates.
 #include <catch2/catch.hpp>
 
@@ -12,6 +12,7 @@
 #include <random>
 
 #include "impact3d/numeric/lean.hpp"
+#include "impact3d/numeric/multiprecision.hpp"
 #include "support.hpp"
 
 // Every allocation of this program is counted, so that the lean path's "no heap per case" is measured.
@@ -111,7 +112,7 @@ bool compare(const Scene<T>& s, const Strategy<T>& st, Engine engine) {
 }  // namespace
 
 TEMPLATE_TEST_CASE("solve_lean gives analyze's impulse, ratios, velocities and warning codes, bit for bit", "[lean]",
-                   double, long double) {
+                   double, long double, mp::float100) {
   std::mt19937_64 g(20261121);
   std::uniform_real_distribution<double> u(0, 1);
   int compared = 0, undecided = 0, not_approaching = 0;

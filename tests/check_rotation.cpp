@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "impact3d/numeric/multiprecision.hpp"
 #include "support.hpp"
 
 using namespace impact3d;
@@ -73,4 +74,21 @@ TEST_CASE("rotation_zyx_deg_closed equals rotation_zyx_deg entry by entry, but f
   for (int i = 0; i < 100000; ++i) check(u(g), u(g), u(g));
   CHECK(differing == 0);
   CHECK(compared == 14 * 14 * 14 + 100000);
+}
+
+TEST_CASE("at 100 digits one mpfr_sin_cos gives Boost's sin and cos bit for bit", "[rotation]") {
+  using F = mp::float100;
+  std::mt19937_64 g(12);
+  std::uniform_real_distribution<double> u(-3.2, 3.2);
+  int checked = 0;
+  for (int k = 0; k < 500; ++k) {
+    const F rad = F(u(g)) / F(3);  // not a double: every digit of the 100 in play
+    F s, c;
+    SinCosRadians<F>::of(rad, s, c);
+    // Both correctly rounded (MPFR's guarantee for mpfr_sin_cos, mpfr_sin and mpfr_cos): the same number.
+    CHECK(s == boost::multiprecision::sin(rad));
+    CHECK(c == boost::multiprecision::cos(rad));
+    ++checked;
+  }
+  CHECK(checked == 500);
 }

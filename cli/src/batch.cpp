@@ -18,17 +18,21 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <future>
+#include <optional>
 #include <thread>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_tree.hpp"
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/limits.hpp"
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/io/render.hpp"
 #include "impact3d/io/strategy_option.hpp"
+#include "batch_csv.hpp"
 #include "user_error.hpp"
 
 namespace impact3d::cli {
@@ -124,25 +128,48 @@ struct Solved {
   bool internal = false;  // a defect of impact3d, not of the row: the run's status is 3
 };
 
-Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::StrategySpec>& strategies) {
+// How rows are read and written: the CSV header's columns when the input is CSV, and the output format.
+struct Formats {
+  const csv::CaseColumns* columns = nullptr;  // null: JSON Lines in
+  bool csv_out = false;
+};
+
+std::string rejected_row(long line, const std::string& problem, const Formats& f) {
+  return f.csv_out ? csv::error_row(line, problem) : error_record(line, problem);
+}
+
+// The result document as the output wants it: one JSON line with "line" first, or CSV rows.
+std::string answer(std::string doc, long line, const Formats& f) {
+  if (!f.csv_out) return with_line(std::move(doc), line);
+  io::JsonValue tree;
+  if (!io::parse_json_tree_fast(doc, tree)) tree = io::parse_json_tree(doc);
+  return csv::result_rows(tree, line);
+}
+
+Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::StrategySpec>& strategies, const Formats& f) {
   if (row.too_long)
-    return {error_record(row.line, fmt::format("$: larger than {} bytes, the limit for this input", io::limits::kCaseFileBytes)),
+    return {rejected_row(row.line, fmt::format("$: larger than {} bytes, the limit for this input", io::limits::kCaseFileBytes), f),
             false};
   try {
-    io::CaseSpec spec = io::read_case(row.text);
+    io::CaseSpec spec = io::read_case(f.columns ? f.columns->case_json(row.text) : row.text);
     if (!strategies.empty()) spec.strategies = strategies;
     try {
-      return {with_line(io::render(spec, o.precision, {"jsonl", 0, o.engine}), row.line), true};
+      return {answer(io::render(spec, o.precision, {"jsonl", 0, o.engine}), row.line, f), true};
     } catch (const SolveError& e) {
       throw io::no_solution(spec, e);
     }
   } catch (const io::CaseError& e) {
-    return {error_record(row.line, e.line()), false};
+    return {rejected_row(row.line, e.line(), f), false};
   } catch (const Irrational& e) {
-    return {error_record(row.line, std::string("$: ") + e.what()), false};
+    return {rejected_row(row.line, std::string("$: ") + e.what(), f), false};
   } catch (const std::exception& e) {
-    return {error_record(row.line, std::string("$: internal error: ") + e.what()), false, true};
+    return {rejected_row(row.line, std::string("$: internal error: ") + e.what(), f), false, true};
   }
+}
+
+bool csv_input(const BatchOptions& o) {
+  if (o.input_format != "auto") return o.input_format == "csv";
+  return o.input.size() > 4 && o.input.compare(o.input.size() - 4, 4, ".csv") == 0;
 }
 
 int open_input(const std::string& path) {
@@ -227,13 +254,35 @@ int batch(const BatchOptions& o) {
   std::signal(SIGPIPE, SIG_IGN);
 
   LineReader reader(in);
+  bool output_lost = false, internal = false;
+  Formats formats;
+  formats.csv_out = o.format == "csv";
+  std::optional<csv::CaseColumns> columns;
+  if (csv_input(o)) {  // the first line that is not blank is the header
+    Row header;
+    if (reader.next(header)) {
+      const std::string name = o.input == "-" ? "standard input" : o.input;
+      if (header.too_long) throw UserError(fmt::format("{}: the header is longer than {} bytes", name, io::limits::kCaseFileBytes));
+      try {
+        columns.emplace(header.text);
+      } catch (const io::CaseError& e) {
+        throw io::CaseError(name + ": line " + std::to_string(header.line) + ": " + e.path, e.what());
+      }
+      formats.columns = &*columns;
+    }
+  }
+  if (formats.csv_out && !write_all(out, csv::result_header())) output_lost = true;
   Progress progress(::isatty(STDERR_FILENO) == 1, total);
   long read = 0, solved = 0, rejected = 0;
-  bool output_lost = false, internal = false;
   std::vector<Row> rows;
   std::vector<Solved> results;
   std::vector<char> done;
-  std::string block;  // one block's output, its capacity kept from block to block
+  // A block is written while the next is solved: two buffers, their capacity kept from block to block.
+  std::string block, writing;
+  std::future<bool> pending;  // the write of `writing`, true when it all went out
+  auto wait_write = [&] {
+    if (pending.valid() && !pending.get()) output_lost = true;
+  };
   while (!stop_signal && !output_lost) {
     rows.clear();
     std::size_t bytes = 0;
@@ -248,7 +297,7 @@ int batch(const BatchOptions& o) {
     std::atomic<std::size_t> next{0};
     auto work = [&] {  // a stop leaves the rows not yet started
       for (std::size_t i; !stop_signal && (i = next.fetch_add(1)) < rows.size();) {
-        results[i] = solve_row(rows[i], o, strategies);
+        results[i] = solve_row(rows[i], o, strategies, formats);
         done[i] = 1;
       }
     };
@@ -265,9 +314,13 @@ int batch(const BatchOptions& o) {
       internal = internal || results[written].internal;
     }
     read += static_cast<long>(written);
-    output_lost = !write_all(out, block);
+    wait_write();
+    if (output_lost) break;
+    std::swap(block, writing);
+    pending = std::async(std::launch::async, [&out, &writing] { return write_all(out, writing); });
     progress.update(read, reader.bytes());
   }
+  wait_write();
   progress.finish();
   if (in != STDIN_FILENO) ::close(in);
   if (out != STDOUT_FILENO && ::close(out) != 0) output_lost = true;

@@ -15,10 +15,12 @@ struct BatchOptions {
   unsigned jobs = 0;         // 0: every core
   std::vector<std::string> strategies;  // --strategy, replacing every row's
   std::string precision = "double";
+  std::string format = "jsonl";        // of the output: jsonl or csv
+  std::string input_format = "auto";   // jsonl, csv, or auto: csv when the file name ends in .csv
   Engine engine = Engine::generated;
 };
 
-// Writes one line per case line; returns the exit status: 0 every row solved, 1 any rejected (after
+// Writes one answer per case line (a JSON line, or CSV rows, one per result); returns the exit status: 0 every row solved, 1 any rejected (after
 // writing every row), 130 or 143 when interrupted (the rows finished are written whole).
 int batch(const BatchOptions& o);
 

@@ -106,11 +106,14 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"generated", "direct"}));
   auto* batch_cmd = app.add_subcommand("batch", "solve many cases, one JSON object per line (contract: many-cases.md)");
   impact3d::cli::BatchOptions bopt;
-  std::string batch_engine = "generated", batch_format = "jsonl";
-  batch_cmd->add_option("input", bopt.input, "JSON Lines file of cases (default: standard input, also -)");
+  std::string batch_engine = "generated";
+  batch_cmd->add_option("input", bopt.input, "JSON Lines or CSV file of cases (default: standard input, also -)");
   batch_cmd->add_option("-o,--output", bopt.output, "file for the results (default: standard output)");
   batch_cmd->add_option("--jobs", bopt.jobs, "threads (default: every core)")->check(CLI::Range(1, 1024));
-  batch_cmd->add_option("--format", batch_format, "jsonl: one result document per line")->check(CLI::IsMember({"jsonl"}));
+  batch_cmd->add_option("--format", bopt.format, "jsonl: one result document per line (default); csv: one row per result")
+      ->check(CLI::IsMember({"jsonl", "csv"}));
+  batch_cmd->add_option("--input-format", bopt.input_format, "jsonl, csv (a header of case paths), or auto (default: csv for *.csv)")
+      ->check(CLI::IsMember({"auto", "jsonl", "csv"}));
   batch_cmd->add_option("--strategy", bopt.strategies, "replace every case's strategies (as solve's --strategy)");
   batch_cmd->add_option("--precision", bopt.precision, "arithmetic, as solve's")
       ->check(CLI::IsMember(impact3d::io::precision_names()));

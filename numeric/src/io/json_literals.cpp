@@ -2,6 +2,7 @@
 #include "impact3d/io/json_tree.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <set>
 #include <vector>
 
@@ -157,12 +158,22 @@ void check(std::string_view text, const std::string& root, int depth, JsonValue*
 
 }  // namespace
 
+// Each path is built in one allocation: the case reader makes one per number it reads.
 std::string member_path(const std::string& parent, std::string_view key) {
-  return identifier(key) ? parent + "." + std::string(key) : parent + "[" + io::quoted(key) + "]";
+  if (!identifier(key)) return parent + "[" + io::quoted(key) + "]";
+  std::string path;
+  path.reserve(parent.size() + 1 + key.size());
+  path.append(parent).append(1, '.').append(key);
+  return path;
 }
 
 std::string element_path(const std::string& parent, std::size_t index) {
-  return parent + "[" + std::to_string(index) + "]";
+  char digits[24];
+  const auto end = std::to_chars(digits, digits + sizeof digits, index).ptr;
+  std::string path;
+  path.reserve(parent.size() + 2 + static_cast<std::size_t>(end - digits));
+  path.append(parent).append(1, '[').append(digits, end).append(1, ']');
+  return path;
 }
 
 JsonValue parse_json_tree_checked(std::string_view text, const std::string& root) {

@@ -106,15 +106,16 @@ class Reader {
     return *v;
   }
 
-  Number number(const JsonValue& v, const std::string& ptr) const {
+  Number number(const JsonValue& v, std::string ptr) const {
     if (!v.is(Type::number)) fail(ptr, fmt::format("expected a number, got {}", type_name(v)));
-    Number n{v.text, v.number, ptr};
-    if (!std::isfinite(n.value)) fail(ptr, fmt::format("not a finite number ({})", n.text));
+    Number n{v.text, v.number, std::move(ptr)};
+    const std::string& path = n.path;
+    if (!std::isfinite(n.value)) fail(path, fmt::format("not a finite number ({})", n.text));
     const Decimal d = decimal(n);
     if (compare_magnitude(d, kMax) > 0)
-      fail(ptr, fmt::format("out of range: magnitude {} exceeds {:g}", n.text, std::stod(limits::kMaxMagnitude)));
+      fail(path, fmt::format("out of range: magnitude {} exceeds {:g}", n.text, std::stod(limits::kMaxMagnitude)));
     if (!d.zero() && compare_magnitude(d, kMin) < 0)
-      fail(ptr, fmt::format("out of range: {} is not zero but below {:g} in magnitude", n.text, std::stod(limits::kMinMagnitude)));
+      fail(path, fmt::format("out of range: {} is not zero but below {:g} in magnitude", n.text, std::stod(limits::kMinMagnitude)));
     return n;
   }
 

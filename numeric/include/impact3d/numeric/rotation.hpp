@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "impact3d/numeric/exact.hpp"
+#include "impact3d/numeric/sin_cos_radians.hpp"
 #include "impact3d/numeric/types.hpp"
 
 namespace impact3d {
@@ -18,8 +19,6 @@ struct SinCos {
 // velocity in every level, right-angle case).
 template <typename Scalar>
 SinCos<Scalar> sin_cos_deg(const Scalar& deg) {
-  using std::cos;
-  using std::sin;
   const Scalar quarter(90);
   Scalar turns = floor_of(Scalar(deg / quarter + ratio<Scalar>(1, 2)));
   Scalar rest = deg - turns * quarter;  // in [-45, 45]
@@ -29,10 +28,7 @@ SinCos<Scalar> sin_cos_deg(const Scalar& deg) {
     if (rest != Scalar(0)) throw Irrational("an angle that is not a multiple of 90 degrees (its sine and cosine)");
   } else {
     const Scalar rad = rest * pi<Scalar>() / Scalar(180);
-    if (rest != Scalar(0)) {
-      s = sin(rad);
-      c = cos(rad);
-    }
+    if (rest != Scalar(0)) SinCosRadians<Scalar>::of(rad, s, c);
   }
   // The quarter turn q by selection rather than branches (random angles would mispredict them):
   // odd q exchanges sine and cosine, q >= 2 negates the sine, q = 1 or 2 the cosine.

@@ -1,0 +1,371 @@
+// Case rows are turned into the JSON text of a case and read by the case reader, so that a CSV case is
+// checked exactly as a case file is and its errors name the same paths. Result rows are taken from the
+// result document `solve` prints, so that every number is the same text.
+#include "batch_csv.hpp"
+
+#include <cctype>
+
+#include <fmt/format.h>
+
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_writer.hpp"
+#include "impact3d/io/limits.hpp"
+
+namespace impact3d::cli::csv {
+namespace {
+
+using Node = CaseColumns::Node;
+using io::JsonValue;
+
+constexpr std::size_t kMaxIndex = 63;  // an array index in a header path (a case has at most 64 strategies)
+constexpr int kMaxPathDepth = 8;
+
+bool json_number(std::string_view s) {
+  std::size_t i = 0;
+  auto digits = [&] {
+    const std::size_t start = i;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+    return i > start;
+  };
+  if (i < s.size() && s[i] == '-') ++i;
+  if (i < s.size() && s[i] == '0') ++i;
+  else if (!digits()) return false;
+  if (i < s.size() && s[i] == '.' && (++i, !digits())) return false;
+  if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    ++i;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    if (!digits()) return false;
+  }
+  return i == s.size();
+}
+
+// One step of a header path: a key, or an index.
+struct Step {
+  std::string key;
+  std::size_t index = 0;
+  bool is_index = false;
+};
+
+std::vector<Step> parse_path(std::string_view path, const std::string& where) {
+  std::string_view p = path;
+  if (p.substr(0, 2) == "$.") p.remove_prefix(2);
+  else if (p.substr(0, 1) == "$") p.remove_prefix(1);
+  std::vector<Step> steps;
+  std::size_t i = 0;
+  auto fail = [&](const std::string& problem) { throw io::CaseError(where, problem); };
+  while (i < p.size()) {
+    if (p[i] == '[') {
+      std::size_t j = i + 1, value = 0;
+      while (j < p.size() && std::isdigit(static_cast<unsigned char>(p[j])) && value <= kMaxIndex) value = value * 10 + static_cast<std::size_t>(p[j++] - '0');
+      if (j == i + 1 || j >= p.size() || p[j] != ']') fail("expected an index [n] in the path");
+      if (value > kMaxIndex) fail(fmt::format("an index beyond {}", kMaxIndex));
+      steps.push_back({"", value, true});
+      i = j + 1;
+    } else {
+      if (!steps.empty()) {
+        if (p[i] != '.') fail("expected '.' or '[' in the path");
+        ++i;
+      }
+      const std::size_t start = i;
+      while (i < p.size() && (std::isalnum(static_cast<unsigned char>(p[i])) || p[i] == '_')) ++i;
+      if (i == start || std::isdigit(static_cast<unsigned char>(p[start]))) fail("expected a key (letters, digits, _) in the path");
+      steps.push_back({std::string(p.substr(start, i - start)), 0, false});
+    }
+    if (steps.size() > static_cast<std::size_t>(kMaxPathDepth)) fail(fmt::format("a path deeper than {} steps", kMaxPathDepth));
+  }
+  if (steps.empty()) fail("an empty path");
+  return steps;
+}
+
+// Fields the paths of one header may spell, containers and gaps included: a few per column, so that a
+// header of sparse indices cannot build a large tree.
+constexpr std::size_t kMaxNodes = 4 * io::limits::kCsvColumns;
+
+void insert(Node& root, const std::vector<Step>& steps, std::size_t column, const std::string& where, std::size_t& nodes) {
+  Node* node = &root;
+  node->kind = Node::Kind::object;
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const Step& s = steps[k];
+    Node* child = nullptr;
+    if (s.is_index) {
+      if (node->kind != Node::Kind::array) throw io::CaseError(where, "an index where another column has a key");
+      if (node->elements.size() <= s.index) {
+        nodes += s.index + 1 - node->elements.size();
+        if (nodes > kMaxNodes) throw io::CaseError(where, fmt::format("the header spells more than {} fields", kMaxNodes));
+        node->elements.resize(s.index + 1, Node{Node::Kind::leaf, SIZE_MAX, {}, {}, {}});
+      }
+      child = &node->elements[s.index];
+    } else {
+      if (node->kind != Node::Kind::object) throw io::CaseError(where, "a key where another column has an index");
+      for (std::size_t m = 0; m < node->keys.size(); ++m)
+        if (node->keys[m] == s.key) child = &node->members[m];
+      if (!child) {
+        if (++nodes > kMaxNodes) throw io::CaseError(where, fmt::format("the header spells more than {} fields", kMaxNodes));
+        node->keys.push_back(s.key);
+        child = &node->members.emplace_back(Node{Node::Kind::leaf, SIZE_MAX, {}, {}, {}});
+      }
+    }
+    const bool last = k + 1 == steps.size();
+    const bool fresh = child->kind == Node::Kind::leaf && child->column == SIZE_MAX && child->members.empty() && child->elements.empty();
+    if (last) {
+      if (!fresh) throw io::CaseError(where, "the same field as another column, or a field another column is inside");
+      child->column = column;
+    } else {
+      const Node::Kind want = steps[k + 1].is_index ? Node::Kind::array : Node::Kind::object;
+      if (fresh) child->kind = want;
+      else if (child->kind == Node::Kind::leaf) throw io::CaseError(where, "inside a field another column fills");
+    }
+    node = child;
+  }
+}
+
+void check_dense(const Node& node, const std::string& path) {
+  for (std::size_t i = 0; i < node.elements.size(); ++i) {
+    const Node& e = node.elements[i];
+    const std::string p = path + "[" + std::to_string(i) + "]";
+    if (e.kind == Node::Kind::leaf && e.column == SIZE_MAX) throw io::CaseError("header", fmt::format("no column for {}", p));
+    check_dense(e, p);
+  }
+  for (std::size_t m = 0; m < node.keys.size(); ++m) check_dense(node.members[m], path + "." + node.keys[m]);
+}
+
+bool any(const Node& n, const std::vector<Cell>& cells) {
+  if (n.kind == Node::Kind::leaf) return !cells[n.column].text.empty();
+  for (const auto& m : n.members)
+    if (any(m, cells)) return true;
+  for (const auto& e : n.elements)
+    if (any(e, cells)) return true;
+  return false;
+}
+
+void emit(const Node& n, const std::vector<Cell>& cells, std::string& out) {
+  switch (n.kind) {
+    case Node::Kind::leaf: {
+      const Cell& c = cells[n.column];
+      if (c.text.empty()) out += "null";
+      else if (!c.quoted && json_number(c.text)) out += c.text;
+      else io::JsonWriter::append_quoted(out, c.text);
+      return;
+    }
+    case Node::Kind::object: {
+      out += '{';
+      bool first = true;
+      for (std::size_t m = 0; m < n.keys.size(); ++m) {
+        if (!any(n.members[m], cells)) continue;
+        if (!first) out += ", ";
+        first = false;
+        io::JsonWriter::append_quoted(out, n.keys[m]);
+        out += ": ";
+        emit(n.members[m], cells, out);
+      }
+      out += '}';
+      return;
+    }
+    case Node::Kind::array: {
+      // Trailing elements with no cell are left out, so that rows may hold fewer strategies than the
+      // header has columns for.
+      std::size_t size = n.elements.size();
+      while (size > 0 && !any(n.elements[size - 1], cells)) --size;
+      out += '[';
+      for (std::size_t i = 0; i < size; ++i) {
+        if (i) out += ", ";
+        emit(n.elements[i], cells, out);
+      }
+      out += ']';
+      return;
+    }
+  }
+}
+
+// A cell of the result CSV: numbers as the document writes them, strings quoted when they must be.
+void put_text(std::string& out, std::string_view s) {
+  if (s.find_first_of(",\"\r\n") == std::string_view::npos && (s.empty() || (s.front() != ' ' && s.back() != ' '))) {
+    out += s;
+    return;
+  }
+  out += '"';
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  out += '"';
+}
+
+// The columns of a result row: a path in the result, or in the whole document for those marked.
+struct ResultColumn {
+  std::string name;
+  std::vector<Step> path;
+  bool of_document = false;
+};
+
+const std::vector<ResultColumn>& result_columns() {
+  static const std::vector<ResultColumn> columns = [] {
+    std::vector<std::string> names = {"impulse_ratio.mu", "impulse_ratio.mu_t", "impulse_ratio.mu_z", "limits.gir", "limits.cir",
+                                      "limits.mu_t_critical", "limits.mu_z_critical", "plane_angle_deg"};
+    auto vec = [&](const std::string& p) {
+      for (int i = 0; i < 3; ++i) names.push_back(p + "[" + std::to_string(i) + "]");
+    };
+    vec("impulse.contact");
+    vec("impulse.world");
+    vec("relative_velocity.before");
+    vec("relative_velocity.after");
+    for (const char* s : {"sliding.before", "sliding.after", "sliding.swerve_angle_deg", "sliding.swerve_speed",
+                          "impulse_space.restitution_effective", "impulse_space.t_sliding", "impulse_space.z_sliding",
+                          "impulse_space.volume"})
+      names.emplace_back(s);
+    for (int v = 0; v < 2; ++v) {
+      const std::string p = "vehicles[" + std::to_string(v) + "].";
+      vec(p + "velocity");
+      vec(p + "angular_velocity");
+      vec(p + "delta_v");
+      for (const char* s : {"delta_v_magnitude", "pdof_deg", "pdof_clock"}) names.push_back(p + s);
+    }
+    for (const char* s : {"energy.before", "energy.after", "energy.loss", "rounding_bound"}) names.emplace_back(s);
+    std::vector<ResultColumn> out;
+    for (const char* s : {"name", "units", "precision", "engine"}) out.push_back({s, parse_path(s, s), true});
+    for (const auto& n : names) out.push_back({n, parse_path(n, n), false});
+    return out;
+  }();
+  return columns;
+}
+
+const JsonValue* at(const JsonValue& root, const std::vector<Step>& path) {
+  const JsonValue* v = &root;
+  for (const Step& s : path) {
+    if (s.is_index) v = v->is(JsonValue::Type::array) && s.index < v->size() ? &v->items[s.index] : nullptr;
+    else v = v->is(JsonValue::Type::object) ? v->find(s.key) : nullptr;
+    if (!v) return nullptr;
+  }
+  return v;
+}
+
+void put_value(std::string& out, const JsonValue* v) {
+  if (!v) return;
+  switch (v->type) {
+    case JsonValue::Type::number: out += v->text; break;
+    case JsonValue::Type::string: put_text(out, v->text); break;
+    case JsonValue::Type::boolean: out += v->flag ? "true" : "false"; break;
+    default: break;  // null, and no container is a column
+  }
+}
+
+// The strategy as --strategy writes it: name:key=value,...
+std::string strategy_text(const JsonValue* s) {
+  if (!s || !s->is(JsonValue::Type::object)) return {};
+  std::string text, params;
+  for (std::size_t i = 0; i < s->keys.size(); ++i) {
+    const JsonValue& v = s->items[i];
+    if (s->keys[i] == "name") {
+      text = v.text;
+      continue;
+    }
+    params += params.empty() ? "" : ",";
+    params += s->keys[i] + "=" + v.text;
+  }
+  return params.empty() ? text : text + ":" + params;
+}
+
+}  // namespace
+
+std::string split(std::string_view line, std::vector<Cell>& cells) {
+  cells.clear();
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  std::size_t i = 0;
+  for (;;) {
+    Cell& cell = cells.emplace_back();
+    if (cells.size() > io::limits::kCsvColumns) return fmt::format("more than {} cells", io::limits::kCsvColumns);
+    if (i < line.size() && line[i] == '"') {
+      cell.quoted = true;
+      for (++i;; ++i) {
+        if (i >= line.size()) return fmt::format("cell {}: a quote not closed on its line", cells.size());
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') ++i;
+          else break;
+        }
+        cell.text += line[i];
+      }
+      ++i;
+      if (i < line.size() && line[i] != ',') return fmt::format("cell {}: text after the closing quote", cells.size());
+    } else {
+      const std::size_t end = std::min(line.find(',', i), line.size());
+      cell.text.assign(line.substr(i, end - i));
+      while (!cell.text.empty() && (cell.text.back() == ' ' || cell.text.back() == '\t')) cell.text.pop_back();
+      const std::size_t lead = cell.text.find_first_not_of(" \t");
+      cell.text.erase(0, lead == std::string::npos ? cell.text.size() : lead);
+      i = end;
+    }
+    if (i >= line.size()) return {};
+    ++i;  // the comma
+  }
+}
+
+CaseColumns::CaseColumns(std::string_view header) {
+  std::vector<Cell> cells;
+  if (const std::string problem = split(header, cells); !problem.empty()) throw io::CaseError("header", problem);
+  root_.kind = Node::Kind::object;
+  std::size_t nodes = 0;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const std::string where = fmt::format("header column {} ({})", c + 1, io::quoted(cells[c].text.substr(0, 80)));
+    insert(root_, parse_path(cells[c].text, where), c, where, nodes);
+  }
+  check_dense(root_, "$");
+  columns_ = cells.size();
+}
+
+std::string CaseColumns::case_json(std::string_view line) const {
+  std::vector<Cell> cells;
+  if (const std::string problem = split(line, cells); !problem.empty()) throw io::CaseError("$", "not a CSV row: " + problem);
+  if (cells.size() != columns_)
+    throw io::CaseError("$", fmt::format("{} cells, but the header has {} columns", cells.size(), columns_));
+  std::string out;
+  out.reserve(line.size() * 2 + 64);
+  emit(root_, cells, out);
+  return out;
+}
+
+std::string result_header() {
+  std::string out = "line,result,error";
+  for (const auto& c : result_columns())
+    if (c.of_document) out += ',' + c.name;
+  out += ",strategy,regime";
+  for (const auto& c : result_columns())
+    if (!c.of_document) out += ',' + c.name;
+  out += ",warnings\n";
+  return out;
+}
+
+std::string result_rows(const JsonValue& document, long line) {
+  std::string out;
+  const JsonValue* results = document.find("results");
+  const std::size_t n = results && results->is(JsonValue::Type::array) ? results->size() : 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const JsonValue& r = results->items[k];
+    out += fmt::format("{},{},", line, k);
+    for (const auto& c : result_columns())
+      if (c.of_document) out += ',', put_value(out, at(document, c.path));
+    out += ',';
+    put_text(out, strategy_text(r.find("strategy")));
+    out += ',';
+    put_value(out, r.find("regime"));
+    for (const auto& c : result_columns())
+      if (!c.of_document) out += ',', put_value(out, at(r, c.path));
+    std::string warnings;
+    if (const JsonValue* w = r.find("warnings"); w && w->is(JsonValue::Type::array))
+      for (const auto& item : w->items) warnings += (warnings.empty() ? "" : " | ") + item.text;
+    out += ',';
+    put_text(out, warnings);
+    out += '\n';
+  }
+  return out;
+}
+
+std::string error_row(long line, const std::string& problem) {
+  std::string out = fmt::format("{},,", line);
+  put_text(out, io::printable(problem));
+  out.append(result_columns().size() + 3, ',');  // the document's and the result's columns, strategy, regime, warnings
+  out += '\n';
+  return out;
+}
+
+}  // namespace impact3d::cli::csv

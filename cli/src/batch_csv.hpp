@@ -1,0 +1,53 @@
+// `impact3d batch --input-format csv` and `--format csv` (README, "batch CSV"): a case per CSV row whose
+// header names each column by the JSON path of the case field it fills, and a result per CSV row with a
+// fixed set of columns, one row per strategy of each case.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact3d/io/json_tree.hpp"
+
+namespace impact3d::cli::csv {
+
+struct Cell {
+  std::string text;
+  bool quoted = false;
+};
+
+// The cells of one line (RFC 4180, a row on one line; a trailing carriage return is dropped). Returns
+// an empty string, or the problem.
+std::string split(std::string_view line, std::vector<Cell>& cells);
+
+// The header of a case CSV: each column a path of case-format.md ("vehicles[0].mass", "$.restitution",
+// "strategy[0].mu"), together a tree of objects and dense arrays.
+class CaseColumns {
+ public:
+  // Throws io::CaseError naming the column ("header column 3 (vehicles[0].mas[): ...").
+  explicit CaseColumns(std::string_view header);
+  // The row's case as JSON text: unquoted cells that read as JSON numbers are numbers, as written;
+  // every other cell a string; an empty cell leaves its key out (null inside an array that has other
+  // cells), and an object or array with no cell at all is left out. Throws io::CaseError at "$".
+  std::string case_json(std::string_view line) const;
+
+  struct Node {
+    enum class Kind { leaf, object, array } kind = Kind::leaf;
+    std::size_t column = 0;
+    std::vector<std::string> keys;  // objects: members[i] is keys[i]'s
+    std::vector<Node> members;
+    std::vector<Node> elements;
+  };
+
+ private:
+  Node root_;
+  std::size_t columns_ = 0;
+};
+
+// The result CSV: its header line, and the lines of one case (one per result of its document, `line`
+// first), or of a case that was rejected.
+std::string result_header();
+std::string result_rows(const io::JsonValue& document, long line);
+std::string error_row(long line, const std::string& problem);
+
+}  // namespace impact3d::cli::csv

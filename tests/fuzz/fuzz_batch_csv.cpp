@@ -1,0 +1,45 @@
+// libFuzzer harness: any bytes as a batch CSV (the first line its header, the others rows). A header
+// is refused or read; each row is refused or becomes JSON text, which for valid UTF-8 is valid JSON
+// within the reader's limits; never a crash, a hang or unbounded memory.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "../../cli/src/batch_csv.hpp"
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_tree.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace impact3d;
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  const std::size_t nl = text.find('\n');
+  std::optional<cli::csv::CaseColumns> columns;
+  try {
+    columns.emplace(text.substr(0, nl));
+  } catch (const io::CaseError&) {
+    return 0;
+  }
+  std::string_view rest = nl == std::string_view::npos ? std::string_view() : text.substr(nl + 1);
+  while (!rest.empty()) {
+    const std::size_t end = std::min(rest.find('\n'), rest.size());
+    const std::string_view line = rest.substr(0, end);
+    rest.remove_prefix(std::min(end + 1, rest.size()));
+    std::string json;
+    try {
+      json = columns->case_json(line);
+    } catch (const io::CaseError&) {
+      continue;
+    }
+    try {
+      (void)io::parse_json_tree(json);
+      (void)io::read_case(json);
+    } catch (const io::CaseError& e) {
+      if (io::valid_utf8(std::string(line)) && std::string_view(e.what()).rfind("invalid JSON", 0) == 0) std::abort();
+    }
+  }
+  return 0;
+}
