@@ -79,6 +79,16 @@ void pc_crash_100(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
 }
 
+// Of which the raw parameters to a scene (nine mpfr_sin_cos and the rotations).
+void scene_of_100(benchmark::State& state) {
+  using F = mp::float100;
+  std::vector<RawCollision<F>> raw;
+  for (std::size_t k = 0; k < 64; ++k) raw.push_back(bench::raw_as<F>(raw_cases()[k]));
+  for (auto _ : state)
+    for (const auto& r : raw) benchmark::DoNotOptimize(scene_of(r));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
+}
+
 // The same collisions as columns, solved on the lanes of one instruction set (the argument's index into
 // batch::simd_available(), widest first).
 void pc_crash_simd(benchmark::State& state) {
@@ -114,3 +124,4 @@ BENCHMARK(pc_crash_analyze<Engine::generated>);
 BENCHMARK(pc_crash_analyze<Engine::direct>);
 BENCHMARK(pc_crash_100<true>)->Name("pc_crash_lean_100_digits");
 BENCHMARK(pc_crash_100<false>)->Name("pc_crash_analyze_100_digits");
+BENCHMARK(scene_of_100)->Name("pc_crash_scene_of_100_digits");

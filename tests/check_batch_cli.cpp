@@ -9,6 +9,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <thread>
+
+#include <sys/stat.h>
 
 #include "cli_process.hpp"
 
@@ -338,5 +341,31 @@ TEST_CASE("batch refuses a CSV header that does not spell a case's paths", "[bat
     ++checked;
   }
   CHECK(checked == 5);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("batch answers a case piped in before the next arrives", "[batch]") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-pipe-{}", ::getpid());
+  fs::create_directories(dir);
+  const fs::path fifo = dir / "cases", out = dir / "out.jsonl";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  const std::string one_case = json::parse(slurp(fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json")).dump() + "\n";
+  // The producer writes one case, waits (up to 20 s) for its answer, and only then ends the input.
+  bool answered_first = false;
+  std::thread producer([&] {
+    const int fd = ::open(fifo.c_str(), O_WRONLY);
+    if (fd < 0) return;
+    if (::write(fd, one_case.data(), one_case.size()) == static_cast<ssize_t>(one_case.size()))
+      for (int ms = 0; ms < 20000 && !answered_first; ms += 10) {
+        answered_first = slurp(out).find('\n') != std::string::npos;
+        ::usleep(10000);
+      }
+    ::close(fd);
+  });
+  const Run r = run_program(IMPACT3D_CLI, {"batch", "-o", out.string(), "--jobs", "2"}, fifo.string());
+  producer.join();
+  CHECK(r.status == 0);
+  CHECK(answered_first);
+  CHECK(lines_of(slurp(out)).size() == 1);
   fs::remove_all(dir);
 }

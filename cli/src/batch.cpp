@@ -9,6 +9,7 @@
 
 #include <fcntl.h>
 #include <malloc.h>
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -87,6 +88,13 @@ class LineReader {
     }
   }
   long lines() const { return line_; }
+  // True when reading would not wait for a writer: bytes in hand, or the descriptor has some or is at
+  // its end (a regular file always is).
+  bool ready() const {
+    if (pos_ < len_) return true;
+    pollfd p{fd_, POLLIN, 0};
+    return ::poll(&p, 1, 0) != 0;
+  }
   std::uint64_t bytes() const { return consumed_; }
 
  private:
@@ -287,7 +295,9 @@ int batch(const BatchOptions& o) {
     rows.clear();
     std::size_t bytes = 0;
     Row row;
-    while (rows.size() < kBlockRows && bytes < kBlockBytes && !stop_signal && reader.next(row)) {
+    // A block also ends when the input would keep it waiting, so that a slow producer (cases piped one
+    // at a time) gets each answer as soon as it is solved.
+    while (rows.size() < kBlockRows && bytes < kBlockBytes && !stop_signal && (rows.empty() || reader.ready()) && reader.next(row)) {
       bytes += row.text.size();
       rows.push_back(std::move(row));
     }

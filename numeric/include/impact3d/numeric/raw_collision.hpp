@@ -17,7 +17,7 @@ namespace impact3d {
 template <typename Scalar>
 struct RawVehicle {
   Scalar mass;
-  Mat3<Scalar> J_B;                       // inertia tensor about the CG, body axes
+  Mat3<Scalar> J_B;                       // inertia tensor about the CG, body axes (its upper triangle is read)
   Scalar yaw_deg, pitch_deg, roll_deg;    // body -> world
   Vec3<Scalar> v_W, w_B, p_CgIc_B;        // CG velocity (world), angular velocity (body), impulse centre (body)
 };
@@ -49,7 +49,10 @@ Scene<Scalar> scene_of(const RawCollision<Scalar>& c) {
   Scene<Scalar> s;
   for (int i = 0; i < 2; ++i) {
     const RawVehicle<Scalar>& v = c.vehicle[i];
-    s.body[i] = {v.mass, v.J_B, rotation_zyx(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]), v.v_W, v.w_B, v.p_CgIc_B};
+    // Symmetric by construction: the condition bounds read the upper triangle, Eigen's solves the lower.
+    Mat3<Scalar> J = v.J_B;
+    J.template triangularView<Eigen::StrictlyLower>() = J.transpose();
+    s.body[i] = {v.mass, J, rotation_zyx(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]), v.v_W, v.w_B, v.p_CgIc_B};
   }
   s.R_WC = rotation_zyx(sc[6], sc[7], sc[8]);
   s.restitution = c.restitution;

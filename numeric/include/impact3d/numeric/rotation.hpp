@@ -19,15 +19,18 @@ struct SinCos {
 // velocity in every level, right-angle case).
 template <typename Scalar>
 SinCos<Scalar> sin_cos_deg(const Scalar& deg) {
-  const Scalar quarter(90);
-  Scalar turns = floor_of(Scalar(deg / quarter + ratio<Scalar>(1, 2)));
+  // Built once: at 100 digits each construction is an MPFR call and 1/2 a division. turns / 4 as
+  // turns * 1/4 is the same number (a power of two).
+  static const Scalar quarter(90), half = ratio<Scalar>(1, 2), fourth = ratio<Scalar>(1, 4);
+  Scalar turns = floor_of(Scalar(deg / quarter + half));
   Scalar rest = deg - turns * quarter;  // in [-45, 45]
-  Scalar q = turns - Scalar(4) * floor_of(Scalar(turns / Scalar(4)));
+  Scalar q = turns - Scalar(4) * floor_of(Scalar(turns * fourth));
   Scalar s(0), c(1);
   if constexpr (is_exact_v<Scalar>) {
     if (rest != Scalar(0)) throw Irrational("an angle that is not a multiple of 90 degrees (its sine and cosine)");
   } else {
-    const Scalar rad = rest * pi<Scalar>() / Scalar(180);
+    static const Scalar pi_ = pi<Scalar>(), straight(180);
+    const Scalar rad = rest * pi_ / straight;
     if (rest != Scalar(0)) SinCosRadians<Scalar>::of(rad, s, c);
   }
   // The quarter turn q by selection rather than branches (random angles would mispredict them):
