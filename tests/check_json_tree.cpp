@@ -3,6 +3,7 @@
 // accepts the checking reader accepts with the same tree, and the fast reader takes every well-formed
 // case. The same property is fuzzed by tests/fuzz/fuzz_json_tree.cpp.
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -15,6 +16,7 @@
 #include "fuzz/json_tree_equal.hpp"
 #include "impact3d/io/case_spec.hpp"
 #include "impact3d/io/json_tree.hpp"
+#include "impact3d/io/read_case.hpp"
 
 namespace {
 
@@ -63,9 +65,39 @@ TEST_CASE("numbers as the checker reports them: integers as printed, -0 as 0, va
   CHECK(std::signbit(v.items[1].number));
   CHECK(v.items[2].text == "1E+2");
   CHECK(v.items[3].text == "18446744073709551615");
+  // impact3d's own documents read back as written: a printed negative zero stays "-0" (batch CSV).
+  JsonValue w;
+  REQUIRE(parse_json_tree_fast("[-0, 1]", w, true));
+  CHECK(w.items[0].text == "-0");
+  CHECK(std::signbit(w.items[0].number));
   CHECK(compare_readers("[-0, -0.0, 1E+2, 18446744073709551615]") == 2);
   // Beyond 64 bits simdjson refuses the integer; the checker reads it, as a double with its text.
   CHECK(compare_readers("[123456789012345678901234567890]") == 1);
+}
+
+TEST_CASE("long literals below one: the value of the text, as the checker reads it (simdjson issue 2093)") {
+  // simdjson 3.0's own value of such literals is wrong; the fast reader takes the text's.
+  const std::string text = "[-0.2345664455510000555100005375809, 0.90000000000000000000, 0.30000000000000000000]";
+  JsonValue v;
+  REQUIRE(parse_json_tree_fast(text, v));
+  CHECK(v.items[0].number == std::strtod("-0.2345664455510000555100005375809", nullptr));
+  CHECK(v.items[1].number == 0.9);
+  CHECK(compare_readers(text) == 2);
+  // And so the case reader's definiteness test: the first tensor is indefinite (0.5^2 < 0.9^2), the
+  // second definite (0.3^2 > 0.2^2), whichever reader read them.
+  std::ifstream in(std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json");
+  std::ostringstream s;
+  s << in.rdbuf();
+  const std::string fig8 = s.str(), tensor = "[[560, 0, -40], [0, 2500, 0], [-40, 0, 2700]]";
+  const auto at = fig8.find(tensor);
+  REQUIRE(at != std::string::npos);
+  auto with = [&](const std::string& t) { return std::string(fig8).replace(at, tensor.size(), t); };
+  const std::string indefinite = with("[[0.5, 0.90000000000000000000, 0], [0.90000000000000000000, 0.5, 0], [0, 0, 1]]");
+  const std::string definite = with("[[0.30000000000000000000, 0.2, 0], [0.2, 0.30000000000000000000, 0], [0, 0, 1]]");
+  for (const std::string& bom : {std::string(), std::string("\xEF\xBB\xBF")}) {  // with a BOM the checker reads them
+    CHECK_THROWS_WITH(read_case(bom + indefinite), "not positive definite");
+    CHECK_NOTHROW(read_case(bom + definite));
+  }
 }
 
 TEST_CASE("the fast reader leaves to the checker what needs a message") {
@@ -78,6 +110,10 @@ TEST_CASE("the fast reader leaves to the checker what needs a message") {
   JsonValue v;
   CHECK(!parse_json_tree_fast(std::string(33, '[') + std::string(33, ']'), v));
   CHECK(!parse_json_tree_fast("{\"" + std::string(129, 'k') + "\": 1}", v));
+  std::string many = "{";
+  for (int k = 0; k < 65; ++k) many += (k ? ", \"k" : "\"k") + std::to_string(k) + "\": 0";
+  CHECK(!parse_json_tree_fast(many + "}", v));  // more keys than the duplicate scan takes
+  CHECK(compare_readers(many + "}") == 1);
 }
 
 TEST_CASE("random mutations: whatever the fast reader accepts, the checker reads the same") {

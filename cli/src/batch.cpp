@@ -10,6 +10,7 @@
 #include <fcntl.h>
 #include <malloc.h>
 #include <poll.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -40,9 +41,30 @@ namespace impact3d::cli {
 
 namespace {
 
-volatile std::sig_atomic_t stop_signal = 0;
+// Lock-free, so the handler may set it and the workers read it.
+std::atomic<int> stop_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 extern "C" void on_stop(int signal) { stop_signal = signal; }
+
+// Threads started inside this scope block SIGINT and SIGTERM, so that a signal reaches the main thread
+// and interrupts its read of the input.
+class SignalsToMain {
+ public:
+  SignalsToMain() {
+    sigset_t stop;
+    sigemptyset(&stop);
+    sigaddset(&stop, SIGINT);
+    sigaddset(&stop, SIGTERM);
+    ::pthread_sigmask(SIG_BLOCK, &stop, &saved_);
+  }
+  ~SignalsToMain() { ::pthread_sigmask(SIG_SETMASK, &saved_, nullptr); }
+  SignalsToMain(const SignalsToMain&) = delete;
+  SignalsToMain& operator=(const SignalsToMain&) = delete;
+
+ private:
+  sigset_t saved_;
+};
 
 // Rows solved between two writes: enough to keep every thread busy, few enough to bound memory (a
 // block also ends at kBlockBytes of case text, since a row may be as long as a case file).
@@ -150,7 +172,7 @@ std::string rejected_row(long line, const std::string& problem, const Formats& f
 std::string answer(std::string doc, long line, const Formats& f) {
   if (!f.csv_out) return with_line(std::move(doc), line);
   io::JsonValue tree;
-  if (!io::parse_json_tree_fast(doc, tree)) tree = io::parse_json_tree(doc);
+  if (!io::parse_json_tree_fast(doc, tree, true)) throw std::runtime_error("the result document does not read back");
   return csv::result_rows(tree, line);
 }
 
@@ -280,7 +302,8 @@ int batch(const BatchOptions& o) {
     }
   }
   if (formats.csv_out && !write_all(out, csv::result_header())) output_lost = true;
-  Progress progress(::isatty(STDERR_FILENO) == 1, total);
+  // Not over rows being written to the same terminal.
+  Progress progress(::isatty(STDERR_FILENO) == 1 && ::isatty(out) != 1, total);
   long read = 0, solved = 0, rejected = 0;
   std::vector<Row> rows;
   std::vector<Solved> results;
@@ -313,7 +336,10 @@ int batch(const BatchOptions& o) {
     };
     {
       std::vector<std::jthread> pool;  // joined on leaving the scope, whatever happens
-      for (unsigned t = 1; t < std::min<std::size_t>(jobs, rows.size()); ++t) pool.emplace_back(work);
+      {
+        const SignalsToMain mask;
+        for (unsigned t = 1; t < std::min<std::size_t>(jobs, rows.size()); ++t) pool.emplace_back(work);
+      }
       work();
     }
     block.clear();
@@ -327,7 +353,10 @@ int batch(const BatchOptions& o) {
     wait_write();
     if (output_lost) break;
     std::swap(block, writing);
-    pending = std::async(std::launch::async, [&out, &writing] { return write_all(out, writing); });
+    {
+      const SignalsToMain mask;
+      pending = std::async(std::launch::async, [&out, &writing] { return write_all(out, writing); });
+    }
     progress.update(read, reader.bytes());
   }
   wait_write();

@@ -3,6 +3,7 @@
 // result document `solve` prints, so that every number is the same text.
 #include "batch_csv.hpp"
 
+#include <algorithm>
 #include <cctype>
 
 #include <fmt/format.h>
@@ -50,14 +51,15 @@ struct Step {
 std::vector<Step> parse_path(std::string_view path, const std::string& where) {
   std::string_view p = path;
   if (p.substr(0, 2) == "$.") p.remove_prefix(2);
-  else if (p.substr(0, 1) == "$") p.remove_prefix(1);
+  else if (p.substr(0, 2) == "$[") p.remove_prefix(1);
   std::vector<Step> steps;
   std::size_t i = 0;
   auto fail = [&](const std::string& problem) { throw io::CaseError(where, problem); };
   while (i < p.size()) {
     if (p[i] == '[') {
       std::size_t j = i + 1, value = 0;
-      while (j < p.size() && std::isdigit(static_cast<unsigned char>(p[j])) && value <= kMaxIndex) value = value * 10 + static_cast<std::size_t>(p[j++] - '0');
+      for (; j < p.size() && std::isdigit(static_cast<unsigned char>(p[j])); ++j)
+        value = std::min(value * 10 + static_cast<std::size_t>(p[j] - '0'), kMaxIndex + 1);  // saturated: no overflow
       if (j == i + 1 || j >= p.size() || p[j] != ']') fail("expected an index [n] in the path");
       if (value > kMaxIndex) fail(fmt::format("an index beyond {}", kMaxIndex));
       steps.push_back({"", value, true});
@@ -70,6 +72,7 @@ std::vector<Step> parse_path(std::string_view path, const std::string& where) {
       const std::size_t start = i;
       while (i < p.size() && (std::isalnum(static_cast<unsigned char>(p[i])) || p[i] == '_')) ++i;
       if (i == start || std::isdigit(static_cast<unsigned char>(p[start]))) fail("expected a key (letters, digits, _) in the path");
+      if (i - start > io::limits::kKeyChars) fail(fmt::format("a key longer than {} characters", io::limits::kKeyChars));
       steps.push_back({std::string(p.substr(start, i - start)), 0, false});
     }
     if (steps.size() > static_cast<std::size_t>(kMaxPathDepth)) fail(fmt::format("a path deeper than {} steps", kMaxPathDepth));
@@ -271,6 +274,8 @@ std::string strategy_text(const JsonValue* s) {
 std::string split(std::string_view line, std::vector<Cell>& cells) {
   cells.clear();
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  // As a JSON Lines row with one is refused; the byte would otherwise become a \u0000 escape.
+  if (const auto nul = line.find('\0'); nul != std::string_view::npos) return fmt::format("a NUL byte at offset {}", nul);
   std::size_t i = 0;
   for (;;) {
     Cell& cell = cells.emplace_back();
@@ -301,6 +306,7 @@ std::string split(std::string_view line, std::vector<Cell>& cells) {
 }
 
 CaseColumns::CaseColumns(std::string_view header) {
+  if (header.substr(0, 3) == "\xEF\xBB\xBF") header.remove_prefix(3);  // the byte order mark spreadsheets write
   std::vector<Cell> cells;
   if (const std::string problem = split(header, cells); !problem.empty()) throw io::CaseError("header", problem);
   root_.kind = Node::Kind::object;

@@ -4,6 +4,8 @@
 // name the path. So the fast reader never decides what a message says, only that none is needed.
 #include "impact3d/io/json_tree.hpp"
 
+#include <charconv>
+
 #include <simdjson.h>
 
 #include "impact3d/io/decimal.hpp"
@@ -14,7 +16,10 @@ namespace {
 
 namespace od = simdjson::ondemand;
 
+constexpr std::size_t kScannedKeys = 64;
+
 struct Walk {
+  bool as_written = false;
   std::size_t values = 0;
 
   // Below the checker's limits with a margin, so that the checker alone judges every text near one.
@@ -60,7 +65,10 @@ struct Walk {
         for (auto field : o) {
           std::string_view key;
           if (field.unescaped_key().get(key)) return false;
-          if (key.size() > limits::kKeyChars || !simdjson::validate_utf8(key.data(), key.size()) || out.find(key)) return false;
+          // The duplicate check is a scan: objects with more keys than a case has go to the checker.
+          if (out.keys.size() >= kScannedKeys || key.size() > limits::kKeyChars || !simdjson::validate_utf8(key.data(), key.size()) ||
+              out.find(key))
+            return false;
           out.keys.emplace_back(key);
           if (!value(field.value(), out.items.emplace_back(), depth + 1)) return false;
         }
@@ -72,16 +80,21 @@ struct Walk {
 
   // The literal as nlohmann reports it, so that both readers agree: an integer as std::to_string prints
   // it (which differs from the text only for "-0").
-  static bool number(od::value v, JsonValue& out) {
+  bool number(od::value v, JsonValue& out) const {
     std::string_view raw = v.raw_json_token();
     while (!raw.empty() && (raw.back() == ' ' || raw.back() == '\t' || raw.back() == '\n' || raw.back() == '\r')) raw.remove_suffix(1);
     if (raw.size() > limits::kLiteralChars) return false;
     const long e = written_exponent(raw);
     if (e > limits::kExponent || e < -limits::kExponent) return false;
+    // simdjson validates the literal; its value is taken from the text as the checker takes it
+    // (correctly rounded), since simdjson 3.0's value is wrong for some long literals below one
+    // (upstream issue 2093: "0." and 20 or more digits).
     double x;
     if (v.get_double().get(x)) return false;
+    const auto r = std::from_chars(raw.data(), raw.data() + raw.size(), x);
+    if (r.ec != std::errc() || r.ptr != raw.data() + raw.size()) return false;  // e.g. underflow: the checker decides
     out.type = JsonValue::Type::number;
-    if (raw == "-0") raw = "0", x = 0;
+    if (raw == "-0" && !as_written) raw = "0", x = 0;
     out.text.assign(raw);
     out.number = x;
     return true;
@@ -90,7 +103,7 @@ struct Walk {
 
 }  // namespace
 
-bool parse_json_tree_fast(std::string_view text, JsonValue& out) {
+bool parse_json_tree_fast(std::string_view text, JsonValue& out, bool as_written) {
   if (text.size() > limits::kCaseFileBytes) return false;
   thread_local simdjson::dom::parser strict;
   thread_local od::parser reader;
@@ -100,7 +113,7 @@ bool parse_json_tree_fast(std::string_view text, JsonValue& out) {
   if (reader.iterate(padded).get(doc)) return false;
   od::value root;
   if (doc.get_value().get(root)) return false;
-  Walk walk;
+  Walk walk{as_written};
   return walk.value(root, out, 0);  // the strict parse has seen that nothing follows the root
 }
 
