@@ -11,7 +11,9 @@
 #include <malloc.h>
 #include <poll.h>
 #include <pthread.h>
+#include <limits.h>
 #include <sys/stat.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -235,6 +237,29 @@ bool write_all(int fd, const std::string& text) {
   return true;
 }
 
+// The first `n` rows' texts in order, by writev: no copy into one buffer.
+bool write_rows(int fd, const std::vector<Solved>& rows, std::size_t n) {
+  std::vector<iovec> iov;
+  for (std::size_t k = 0; k < n;) {
+    iov.clear();
+    for (std::size_t j = k; j < n && iov.size() < static_cast<std::size_t>(IOV_MAX); ++j)
+      iov.push_back({const_cast<char*>(rows[j].text.data()), rows[j].text.size()});
+    k += iov.size();
+    for (std::size_t first = 0; first < iov.size();) {  // through partial writes
+      const ssize_t w = ::writev(fd, iov.data() + first, static_cast<int>(iov.size() - first));
+      if (w < 0 && errno == EINTR) continue;
+      if (w < 0 || (w == 0 && iov[first].iov_len > 0)) return false;
+      auto left = static_cast<std::size_t>(w);
+      while (first < iov.size() && left >= iov[first].iov_len) left -= iov[first++].iov_len;
+      if (first < iov.size()) {
+        iov[first].iov_base = static_cast<char*>(iov[first].iov_base) + left;
+        iov[first].iov_len -= left;
+      }
+    }
+  }
+  return true;
+}
+
 class Progress {
  public:
   Progress(bool shown, std::uint64_t total_bytes) : shown_(shown), total_(total_bytes) {}
@@ -306,10 +331,10 @@ int batch(const BatchOptions& o) {
   Progress progress(::isatty(STDERR_FILENO) == 1 && ::isatty(out) != 1, total);
   long read = 0, solved = 0, rejected = 0;
   std::vector<Row> rows;
-  std::vector<Solved> results;
   std::vector<char> done;
-  // A block is written while the next is solved: two buffers, their capacity kept from block to block.
-  std::string block, writing;
+  // A block's rows are written by another thread, straight from their strings, while the next block
+  // is solved.
+  std::vector<Solved> results, writing;
   std::future<bool> pending;  // the write of `writing`, true when it all went out
   auto wait_write = [&] {
     if (pending.valid() && !pending.get()) output_lost = true;
@@ -342,20 +367,18 @@ int batch(const BatchOptions& o) {
       }
       work();
     }
-    block.clear();
     std::size_t written = 0;
     for (; written < rows.size() && done[written]; ++written) {  // the finished rows before the first not
-      block += results[written].text;
       ++(results[written].ok ? solved : rejected);
       internal = internal || results[written].internal;
     }
     read += static_cast<long>(written);
     wait_write();
     if (output_lost) break;
-    std::swap(block, writing);
+    std::swap(results, writing);
     {
       const SignalsToMain mask;
-      pending = std::async(std::launch::async, [&out, &writing] { return write_all(out, writing); });
+      pending = std::async(std::launch::async, [&out, &writing, written] { return write_rows(out, writing, written); });
     }
     progress.update(read, reader.bytes());
   }
