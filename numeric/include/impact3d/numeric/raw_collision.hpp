@@ -51,7 +51,7 @@ Scene<Scalar> scene_of(const RawCollision<Scalar>& c) {
     const RawVehicle<Scalar>& v = c.vehicle[i];
     // Symmetric by construction: the condition bounds read the upper triangle, Eigen's solves the lower.
     Mat3<Scalar> J = v.J_B;
-    J.template triangularView<Eigen::StrictlyLower>() = J.transpose();
+    J(1, 0) = J(0, 1), J(2, 0) = J(0, 2), J(2, 1) = J(1, 2);
     s.body[i] = {v.mass, J, rotation_zyx(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]), v.v_W, v.w_B, v.p_CgIc_B};
   }
   s.R_WC = rotation_zyx(sc[6], sc[7], sc[8]);
