@@ -5,7 +5,9 @@
 // the reports use.
 #include <catch2/catch.hpp>
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <random>
 
@@ -46,4 +48,51 @@ TEST_CASE("scalar_to_text of double and long double is the classic stream's text
     for (int d : {17, 10, 1}) check(x, d);
   CHECK(mismatched == 0);
   CHECK(compared == 200000 * 7 + 10 * 3);
+}
+
+// format_g17 decides the rounding from a 192-bit product and leaves only near-ties to std::to_chars
+// (io/format_double.hpp); it must give std::to_chars's text everywhere. Beside random bit patterns: every
+// binade's ends, the neighbours of each power of ten (where the digit count changes), exact ties at the
+// 18th digit (n + 0.25 and n + 0.75 for 16-digit n, representable below 2^52, rounded to even), and
+// quarter-integers whose ties are not exact.
+TEST_CASE("format_g17 is std::to_chars at 17 digits", "[io]") {
+  std::mt19937_64 g(17);
+  int compared = 0, mismatched = 0;
+  auto check = [&](double x) {
+    char mine[32], theirs[32];
+    const std::string a(mine, impact3d::io::format_g17(mine, x));
+    const std::string b(theirs, std::to_chars(theirs, theirs + sizeof theirs, x, std::chars_format::general, 17).ptr);
+    ++compared;
+    if (a != b) {
+      ++mismatched;
+      UNSCOPED_INFO(a << " != " << b);
+    }
+  };
+  for (int i = 0; i < 1000000; ++i) {
+    const std::uint64_t bits = g();
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    check(x);
+  }
+  for (int e = -1074; e <= 1023; ++e) {
+    const double lo = std::ldexp(1.0, e);
+    check(lo);
+    check(std::nextafter(lo, 0.0));
+    check(-std::nextafter(lo, HUGE_VAL));
+  }
+  for (int p = -323; p <= 308; ++p) {
+    const double t = std::strtod(("1e" + std::to_string(p)).c_str(), nullptr);  // stod refuses subnormals
+    for (double x = t, n = 0; n < 4; ++n) x = std::nextafter(x, 0.0), check(x);
+    for (double x = t, n = 0; n < 4; ++n) check(x), x = std::nextafter(x, HUGE_VAL);
+  }
+  for (int i = 0; i < 100000; ++i) {
+    const double n = static_cast<double>(1000000000000000ULL + g() % 3000000000000000ULL);
+    check(n + 0.25);
+    check(n + 0.75);
+    check(std::ldexp(static_cast<double>(g() >> 11), static_cast<int>(g() % 200) - 100));
+  }
+  for (double x : {0.0, -0.0, HUGE_VAL, -HUGE_VAL, std::nan(""), 5e-324, 1.7976931348623157e308, 1e16, 1e17, 975.0})
+    check(x);
+  CHECK(mismatched == 0);
+  CHECK(compared == 1000000 + 3 * 2098 + 8 * 632 + 3 * 100000 + 10);
 }

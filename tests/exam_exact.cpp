@@ -121,7 +121,7 @@ TEST_CASE("an orientation given as a matrix equals the same orientation given by
   io::CaseSpec d = c;
   // The matrix [[0.8, -0.6, 0], [0.6, 0.8, 0], [0, 0, 1]] is a yaw of atan2(0.6, 0.8).
   d.vehicles[0].orientation_matrix.reset();
-  d.vehicles[0].yaw = io::Number{io::scalar_to_text(std::atan2(0.6, 0.8) * 180 / M_PI), 0, ""};
+  d.vehicles[0].yaw = io::Number{io::scalar_to_text(std::atan2(0.6, 0.8) * 180 / M_PI), std::atan2(0.6, 0.8) * 180 / M_PI};
   const Scene<double> a = io::to_scene<double>(c), b = io::to_scene<double>(d);
   CHECK((a.body[0].R_WB - b.body[0].R_WB).cwiseAbs().maxCoeff() <= 4 * eps);
 }

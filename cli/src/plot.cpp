@@ -260,7 +260,7 @@ void sweeps(Context& c, std::size_t k) {
   const std::string sweep_key(io::strategy_kind(spec.kind).sweep_key);
   auto with_mu = [&](double mu) -> Strategy<double> {
     io::StrategySpec swept = spec;
-    swept.numbers[sweep_key] = io::Number{fmt::format("{:.17g}", mu), mu, spec.path};
+    swept.numbers[sweep_key] = io::Number{fmt::format("{:.17g}", mu), mu};
     return io::to_strategy<double>(swept);
   };
   const Strategy<double> as_given = io::to_strategy<double>(spec);

@@ -31,8 +31,8 @@ struct Case {
   throw io::CaseError((c.file.empty() ? c.name : c.file) + ": " + e.path, e.what());
 }
 
-io::Number num(double v, const std::string& path = "") {
-  return io::Number{fmt::format("{:.6g}", v), std::stod(fmt::format("{:.6g}", v)), path};
+io::Number num(double v) {
+  return io::Number{fmt::format("{:.6g}", v), std::stod(fmt::format("{:.6g}", v))};
 }
 
 // A random collision written as decimal text (six significant digits), so that every precision

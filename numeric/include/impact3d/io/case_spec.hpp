@@ -26,8 +26,7 @@ struct CaseError : std::runtime_error {
 
 struct Number {
   std::string text;  // the literal as written in the file
-  double value;      // for validation and messages only
-  std::string path;
+  double value;      // the literal correctly rounded: for validation and messages only
 };
 
 using Vector3 = std::array<Number, 3>;

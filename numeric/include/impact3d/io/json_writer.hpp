@@ -3,6 +3,7 @@
 // JSON has no NaN, and the solution's warnings say which result is not finite (precision_warnings.hpp).
 #pragma once
 
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -20,8 +21,15 @@ class JsonWriter {
   void end_array() { close(']'); }
   JsonWriter& key(std::string_view k) {
     item();
-    append_quoted(out_, k);
-    out_ += ": ";
+    if (plain(k)) {  // the keys the program writes: one copy, no escaping
+      char* p = grow(k.size() + 4);
+      *p++ = '"';
+      std::memcpy(p, k.data(), k.size());
+      std::memcpy(p + k.size(), "\": ", 3);
+    } else {
+      append_quoted(out_, k);
+      out_ += ": ";
+    }
     pending_key_ = true;
     return *this;
   }
@@ -112,10 +120,24 @@ class JsonWriter {
         return;
       }
   }
+  static bool plain(std::string_view s) {
+    for (const char c : s)
+      if (static_cast<unsigned char>(c) < 0x20 || c == '"' || c == '\\') return false;
+    return true;
+  }
+  // `n` more characters at the end, to be written through the pointer returned.
+  char* grow(std::size_t n) {
+    const std::size_t at = out_.size();
+    out_.resize(at + n);
+    return out_.data() + at;
+  }
   void item() {
     if (pending_key_) return;
     if (!has_items_.empty()) {
-      if (has_items_.back()) out_ += one_line_ ? ", " : ",";
+      if (has_items_.back()) {
+        if (one_line_) std::memcpy(grow(2), ", ", 2);
+        else out_ += ',';
+      }
       has_items_.back() = true;
       newline(has_items_.size());
     }
