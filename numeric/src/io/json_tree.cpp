@@ -20,7 +20,12 @@ constexpr std::size_t kScannedKeys = 64;
 
 struct Walk {
   bool as_written = false;
+  // The strict parse has validated the text as UTF-8, so a string needs checking again only when a
+  // \u escape may have made a lone surrogate of it.
+  bool escapes = true;
   std::size_t values = 0;
+
+  bool valid(std::string_view s) const { return !escapes || simdjson::validate_utf8(s.data(), s.size()); }
 
   // Below the checker's limits with a margin, so that the checker alone judges every text near one.
   bool within(std::size_t depth) const { return values < limits::kValues && depth + 1 < static_cast<std::size_t>(limits::kDepth); }
@@ -43,7 +48,7 @@ struct Walk {
       case od::json_type::number: return number(v, out);
       case od::json_type::string: {
         std::string_view s;
-        if (v.get_string().get(s) || !simdjson::validate_utf8(s.data(), s.size())) return false;
+        if (v.get_string().get(s) || !valid(s)) return false;
         out.type = JsonValue::Type::string;
         out.text.assign(s);
         return true;
@@ -52,6 +57,7 @@ struct Walk {
         od::array a;
         if (v.get_array().get(a)) return false;
         out.type = JsonValue::Type::array;
+        out.items.reserve(4);  // vectors of 3 mostly; fewer reallocations
         for (auto element : a) {
           od::value e;
           if (element.get(e) || !value(e, out.items.emplace_back(), depth + 1)) return false;
@@ -62,11 +68,13 @@ struct Walk {
         od::object o;
         if (v.get_object().get(o)) return false;
         out.type = JsonValue::Type::object;
+        out.items.reserve(8);
+        out.keys.reserve(8);
         for (auto field : o) {
           std::string_view key;
           if (field.unescaped_key().get(key)) return false;
           // The duplicate check is a scan: objects with more keys than a case has go to the checker.
-          if (out.keys.size() >= kScannedKeys || key.size() > limits::kKeyChars || !simdjson::validate_utf8(key.data(), key.size()) ||
+          if (out.keys.size() >= kScannedKeys || key.size() > limits::kKeyChars || !valid(key) ||
               out.find(key))
             return false;
           out.keys.emplace_back(key);
@@ -113,7 +121,7 @@ bool parse_json_tree_fast(std::string_view text, JsonValue& out, bool as_written
   if (reader.iterate(padded).get(doc)) return false;
   od::value root;
   if (doc.get_value().get(root)) return false;
-  Walk walk{as_written};
+  Walk walk{as_written, text.find("\\u") != std::string_view::npos};
   return walk.value(root, out, 0);  // the strict parse has seen that nothing follows the root
 }
 

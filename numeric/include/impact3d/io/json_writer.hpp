@@ -20,13 +20,19 @@ class JsonWriter {
   void begin_array() { open('['); }
   void end_array() { close(']'); }
   JsonWriter& key(std::string_view k) {
-    item();
-    if (plain(k)) {  // the keys the program writes: one copy, no escaping
-      char* p = grow(k.size() + 4);
+    if (one_line_ && !pending_key_ && !has_items_.empty() && k.size() <= kShortKey && plain(k)) {
+      // The keys the program writes, with the separator before them: one append, no escaping.
+      char buf[kShortKey + 6];
+      char* p = buf;
+      if (has_items_.back()) *p++ = ',', *p++ = ' ';
+      has_items_.back() = true;
       *p++ = '"';
       std::memcpy(p, k.data(), k.size());
-      std::memcpy(p + k.size(), "\": ", 3);
+      p += k.size();
+      *p++ = '"', *p++ = ':', *p++ = ' ';
+      out_.append(buf, static_cast<std::size_t>(p - buf));
     } else {
+      item();
       append_quoted(out_, k);
       out_ += ": ";
     }
@@ -125,17 +131,12 @@ class JsonWriter {
       if (static_cast<unsigned char>(c) < 0x20 || c == '"' || c == '\\') return false;
     return true;
   }
-  // `n` more characters at the end, to be written through the pointer returned.
-  char* grow(std::size_t n) {
-    const std::size_t at = out_.size();
-    out_.resize(at + n);
-    return out_.data() + at;
-  }
+  static constexpr std::size_t kShortKey = 48;
   void item() {
     if (pending_key_) return;
     if (!has_items_.empty()) {
       if (has_items_.back()) {
-        if (one_line_) std::memcpy(grow(2), ", ", 2);
+        if (one_line_) out_.append(", ", 2);
         else out_ += ',';
       }
       has_items_.back() = true;
