@@ -12,8 +12,10 @@ bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
 }  // namespace
 
 long written_exponent(std::string_view s) {
-  const auto e = s.find_first_of("eE");
-  if (e == std::string_view::npos) return 0;
+  // A plain loop: find_first_of calls memchr once per character of the literal.
+  std::size_t e = 0;
+  while (e < s.size() && s[e] != 'e' && s[e] != 'E') ++e;
+  if (e == s.size()) return 0;
   std::size_t i = e + 1;
   bool negative = false;
   if (i < s.size() && (s[i] == '+' || s[i] == '-')) negative = s[i++] == '-';
