@@ -375,3 +375,69 @@ TEST_CASE("batch answers a case piped in before the next arrives", "[batch]") {
   CHECK(lines_of(slurp(out)).size() == 1);
   fs::remove_all(dir);
 }
+
+// The CSV cells are taken as the document is written (io/json_pick.hpp), not read back from it: a name
+// with every character JSON escapes, each strategy of the offset frontal case (one with a warning, one
+// with a limit choice), at double and exact. Every cell against the JSON Lines document of the same row.
+TEST_CASE("batch's CSV cells are the JSON document's values, escapes, strategies and warnings included", "[batch]") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-pick-{}", ::getpid());
+  fs::create_directories(dir);
+  json c = json::parse(slurp(std::string(IMPACT3D_EXAMPLES_DIR) + "/offset_frontal.json"));
+  c["name"] = "q\"b\\s\nn\x01t\tc, \xC3\xA9";
+  const fs::path in = dir / "cases.jsonl";
+  std::ofstream(in, std::ios::binary) << c.dump() << "\n";
+  int compared = 0, warnings = 0;
+  std::size_t columns = 0;
+  for (const char* precision : {"double", "exact"}) {
+    const Run jsonl = run_argv({"batch", in.string(), "--precision", precision});
+    const Run table = run_argv({"batch", in.string(), "--precision", precision, "--format", "csv"});
+    REQUIRE(jsonl.status == 0);
+    REQUIRE(table.status == 0);
+    const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(lines_of(jsonl.out).at(0));  // the strategy's key order
+    // Records, not lines: the name's newline sits inside a quoted cell (RFC 4180).
+    std::vector<std::string> lines(1);
+    bool quoted = false;
+    for (const char ch : table.out) {
+      if (ch == '"') quoted = !quoted;
+      if (ch == '\n' && !quoted) lines.emplace_back();
+      else lines.back() += ch;
+    }
+    CHECK(lines.back().empty());
+    lines.pop_back();
+    const auto header = csv_cells(lines.at(0));
+    REQUIRE(lines.size() == 1 + doc.at("results").size());
+    for (std::size_t r = 1; r < lines.size(); ++r) {
+      const auto cells = csv_cells(lines[r]);
+      REQUIRE(cells.size() == header.size());
+      const auto& result = doc.at("results").at(std::stoul(cells.at(1)));
+      columns = header.size() - 3;
+      for (std::size_t col = 3; col < header.size(); ++col) {
+        const std::string& name = header[col];
+        INFO(precision << " " << name);
+        if (name == "strategy") {
+          std::string text = result.at("strategy").at("name").get<std::string>(), params;
+          for (const auto& [k, v] : result.at("strategy").items())
+            if (k != "name") params += (params.empty() ? "" : ",") + k + "=" + (v.is_string() ? v.get<std::string>() : v.dump());
+          CHECK(cells[col] == (params.empty() ? text : text + ":" + params));
+        } else if (name == "warnings") {
+          std::string joined;
+          for (const auto& w : result.at("warnings")) joined += (joined.empty() ? "" : " | ") + w.get<std::string>();
+          CHECK(cells[col] == joined);
+          warnings += !joined.empty();
+        } else {
+          const bool of_document = name == "name" || name == "units" || name == "precision" || name == "engine";
+          const auto& from = of_document ? doc : result;
+          const auto ptr = nlohmann::ordered_json::json_pointer(pointer_of(name).to_string());
+          if (!from.contains(ptr) || from.at(ptr).is_null()) CHECK(cells[col].empty());
+          else if (from.at(ptr).is_string()) CHECK(cells[col] == from.at(ptr).get<std::string>());
+          else CHECK(std::stod(cells[col]) == from.at(ptr).get<double>());
+        }
+        ++compared;
+      }
+    }
+  }
+  CHECK(warnings >= 2);  // wach's, at both precisions
+  CHECK(columns > 60);
+  CHECK(compared == static_cast<int>(2 * 5 * columns));  // two precisions, five strategies
+  fs::remove_all(dir);
+}

@@ -171,11 +171,13 @@ std::string rejected_row(long line, const std::string& problem, const Formats& f
 }
 
 // The result document as the output wants it: one JSON line with "line" first, or CSV rows.
-std::string answer(std::string doc, long line, const Formats& f) {
-  if (!f.csv_out) return with_line(std::move(doc), line);
-  io::JsonValue tree;
-  if (!io::parse_json_tree_fast(doc, tree, true)) throw std::runtime_error("the result document does not read back");
-  return csv::result_rows(tree, line);
+std::string answer(const io::CaseSpec& spec, const BatchOptions& o, long line, const Formats& f) {
+  if (!f.csv_out) return with_line(io::render(spec, o.precision, {"jsonl", 0, o.engine}), line);
+  // The cells are the document's text, taken as it is written.
+  thread_local io::JsonPick pick = csv::result_pick();
+  pick.clear();
+  const std::string doc = io::render(spec, o.precision, {"jsonl", 0, o.engine, &pick});
+  return csv::result_rows(doc, pick, line);
 }
 
 Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::StrategySpec>& strategies, const Formats& f) {
@@ -186,7 +188,7 @@ Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::St
     io::CaseSpec spec = io::read_case(f.columns ? f.columns->case_json(row.text) : row.text);
     if (!strategies.empty()) spec.strategies = strategies;
     try {
-      return {answer(io::render(spec, o.precision, {"jsonl", 0, o.engine}), row.line, f), true};
+      return {answer(spec, o, row.line, f), true};
     } catch (const SolveError& e) {
       throw io::no_solution(spec, e);
     }

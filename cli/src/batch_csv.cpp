@@ -341,26 +341,107 @@ std::string result_header() {
   return out;
 }
 
-std::string result_rows(const JsonValue& document, long line) {
+namespace {
+
+// A string as JsonWriter quotes it (json_writer.hpp: \", \\, \n and \u00XX), unquoted.
+std::string unquote(std::string_view q) {
+  std::string s;
+  auto bad = [] { return std::runtime_error("the result document's string does not read back"); };
+  if (q.size() < 2 || q.back() != '"') throw bad();
+  for (std::size_t i = 1; i + 1 < q.size(); ++i) {
+    if (q[i] != '\\') {
+      s += q[i];
+      continue;
+    }
+    if (++i + 1 >= q.size()) throw bad();
+    if (q[i] == 'n') s += '\n';
+    else if (q[i] == '"' || q[i] == '\\') s += q[i];
+    else if (q[i] == 'u' && i + 5 < q.size() && q.substr(i + 1, 2) == "00") {
+      const auto hex = [&](char c) { return c <= '9' ? c - '0' : c - 'a' + 10; };
+      s += static_cast<char>(hex(q[i + 3]) * 16 + hex(q[i + 4]));
+      i += 4;
+    } else {
+      throw bad();
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+io::JsonPick result_pick() {
+  // Column c of the pick is result_columns()[c]; then each result's strategy, regime and warnings.
+  std::vector<std::vector<io::JsonPick::Step>> paths;
+  auto convert = [](const std::vector<Step>& path, bool of_result) {
+    std::vector<io::JsonPick::Step> out;
+    if (of_result) {
+      out.push_back({io::JsonPick::Step::Kind::key, "results", 0});
+      out.push_back({io::JsonPick::Step::Kind::any, {}, 0});
+    }
+    for (const Step& s : path)
+      out.push_back({s.is_index ? io::JsonPick::Step::Kind::index : io::JsonPick::Step::Kind::key, s.key, s.index});
+    return out;
+  };
+  for (const auto& c : result_columns()) paths.push_back(convert(c.path, !c.of_document));
+  for (const char* key : {"strategy", "regime", "warnings"}) paths.push_back(convert({Step{key}}, true));
+  return io::JsonPick(paths);
+}
+
+std::string result_rows(std::string_view document, const io::JsonPick& pick, long line) {
+  const std::size_t columns = result_columns().size(), strategy = columns, regime = columns + 1, warnings = columns + 2,
+                    width = columns + 3;
+  auto of_document = [&](std::size_t column) { return column < columns && result_columns()[column].of_document; };
+  // The span of each (result, column): the document's columns sit in every result's row.
+  std::size_t results = 0;
+  for (const auto& s : pick.spans())
+    if (!of_document(s.column)) results = std::max(results, s.group + 1);
+  constexpr std::size_t kMissing = ~std::size_t{0};
+  std::vector<std::size_t> at(results * width, kMissing);
+  const auto& spans = pick.spans();
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    const auto& s = spans[i];
+    if (!of_document(s.column)) at[s.group * width + s.column] = i;
+    else
+      for (std::size_t k = 0; k < results; ++k) at[k * width + s.column] = i;
+  }
+  // A value as the document has it: a string or a container read as JSON (they are short), anything
+  // else its text.
+  auto value = [&](std::size_t k, std::size_t column, JsonValue& scratch) -> const JsonValue* {
+    const std::size_t i = at[k * width + column];
+    if (i == kMissing) return nullptr;
+    const std::string_view text = document.substr(spans[i].begin, spans[i].end - spans[i].begin);
+    scratch = JsonValue{};
+    if (text.front() == '"') {
+      scratch.type = JsonValue::Type::string;
+      scratch.text = unquote(text);
+    } else if (text.front() == '{' || text.front() == '[') {
+      if (!io::parse_json_tree_fast(text, scratch, true)) throw std::runtime_error("the result document's value does not read back");
+    } else if (text == "true" || text == "false") {
+      scratch.type = JsonValue::Type::boolean;
+      scratch.flag = text == "true";
+    } else if (text != "null") {
+      scratch.type = JsonValue::Type::number;
+      scratch.text.assign(text);
+    }
+    return &scratch;
+  };
   std::string out;
-  const JsonValue* results = document.find("results");
-  const std::size_t n = results && results->is(JsonValue::Type::array) ? results->size() : 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const JsonValue& r = results->items[k];
+  JsonValue scratch;
+  for (std::size_t k = 0; k < results; ++k) {
     out += fmt::format("{},{},", line, k);
-    for (const auto& c : result_columns())
-      if (c.of_document) out += ',', put_value(out, at(document, c.path));
+    for (std::size_t c = 0; c < columns; ++c)
+      if (result_columns()[c].of_document) out += ',', put_value(out, value(k, c, scratch));
     out += ',';
-    put_text(out, strategy_text(r.find("strategy")));
+    put_text(out, strategy_text(value(k, strategy, scratch)));
     out += ',';
-    put_value(out, r.find("regime"));
-    for (const auto& c : result_columns())
-      if (!c.of_document) out += ',', put_value(out, at(r, c.path));
-    std::string warnings;
-    if (const JsonValue* w = r.find("warnings"); w && w->is(JsonValue::Type::array))
-      for (const auto& item : w->items) warnings += (warnings.empty() ? "" : " | ") + item.text;
+    put_value(out, value(k, regime, scratch));
+    for (std::size_t c = 0; c < columns; ++c)
+      if (!result_columns()[c].of_document) out += ',', put_value(out, value(k, c, scratch));
+    std::string joined;
+    if (const JsonValue* w = value(k, warnings, scratch); w && w->is(JsonValue::Type::array))
+      for (const auto& item : w->items) joined += (joined.empty() ? "" : " | ") + item.text;
     out += ',';
-    put_text(out, warnings);
+    put_text(out, joined);
     out += '\n';
   }
   return out;

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "impact3d/io/json_pick.hpp"
 #include "impact3d/io/json_tree.hpp"
 
 namespace impact3d::cli::csv {
@@ -47,7 +48,10 @@ class CaseColumns {
 // The result CSV: its header line, and the lines of one case (one per result of its document, `line`
 // first), or of a case that was rejected.
 std::string result_header();
-std::string result_rows(const io::JsonValue& document, long line);
+// What result_rows takes from each result document, picked as the document is written (RenderOptions).
+io::JsonPick result_pick();
+// The lines of one case, from its document and what `pick` recorded while it was written.
+std::string result_rows(std::string_view document, const io::JsonPick& pick, long line);
 std::string error_row(long line, const std::string& problem);
 
 }  // namespace impact3d::cli::csv

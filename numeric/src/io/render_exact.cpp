@@ -145,7 +145,7 @@ std::string render_exact(const CaseSpec& spec, const RenderOptions& o) {
   const Analysis<F> a = analyze(to_scene<F>(spec), to_strategies<F>(spec), o.engine);
   if (o.format == "json" || o.format == "jsonl")
     return result_json(
-        spec, a, "exact", 0, false, [&](JsonWriter& w) { write_exact(w, spec, not_rational, x); }, o.format == "jsonl");
+        spec, a, "exact", 0, false, [&](JsonWriter& w) { write_exact(w, spec, not_rational, x); }, o.format == "jsonl", o.pick);
   return report_text(spec, a, "exact (100 digits where not rational)", o.digits > 0 ? o.digits : 100) +
          exact_text(spec, not_rational, x);
 }

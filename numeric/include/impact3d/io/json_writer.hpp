@@ -9,17 +9,21 @@
 #include <string_view>
 #include <vector>
 
+#include "impact3d/io/json_pick.hpp"
+
 namespace impact3d::io {
 
 class JsonWriter {
  public:
   // Indented (a file a person reads), or one line (JSON Lines: `batch`), with ", " and ": " between items.
-  explicit JsonWriter(bool one_line = false) : one_line_(one_line) { out_.reserve(4096); }
+  // `pick`, when given, records where the values it names are written (json_pick.hpp).
+  explicit JsonWriter(bool one_line = false, JsonPick* pick = nullptr) : one_line_(one_line), pick_(pick) { out_.reserve(4096); }
   void begin_object() { open('{'); }
   void end_object() { close('}'); }
   void begin_array() { open('['); }
   void end_array() { close(']'); }
   JsonWriter& key(std::string_view k) {
+    if (pick_) next_ = pick_->member(frames_.empty() ? JsonPick::kNone : frames_.back().node, k);
     if (one_line_ && !pending_key_ && !has_items_.empty() && k.size() <= kShortKey && plain(k)) {
       // The keys the program writes, with the separator before them: one append, no escaping.
       char buf[kShortKey + 6];
@@ -45,24 +49,33 @@ class JsonWriter {
   void number(Format&& format) {
     item();
     pending_key_ = false;
+    const Mark m = mark();
     append_number(format);
+    picked(m);
   }
   // A short array of `n` numbers on one line, element i appended by `format(std::string&, i)`.
   template <typename Format>
   void number_row(int n, Format&& format) {
     item();
     pending_key_ = false;
+    const Mark row = mark();
     out_ += '[';
     for (int i = 0; i < n; ++i) {
       if (i) out_ += ", ";
+      Mark m{JsonPick::kNone, row.group, out_.size()};
+      if (pick_) m.node = pick_->element(row.node, static_cast<std::size_t>(i), m.group);
       append_number([&](std::string& out) { format(out, i); });
+      picked(m);
     }
     out_ += ']';
+    picked(row);
   }
   void string(std::string_view s) {
     item();
     pending_key_ = false;
+    const Mark m = mark();
     append_quoted(out_, s);
+    picked(m);
   }
   void boolean(bool b) { value(b ? "true" : "false"); }
   void null() { value("null"); }
@@ -110,6 +123,38 @@ class JsonWriter {
   std::vector<bool> has_items_;
   bool pending_key_ = false;
   bool one_line_;
+  // Picking: the pick node of each open container, the node the last key named, and where a value began.
+  struct Frame {
+    int node;
+    std::size_t count, begin, group;
+    bool object;
+  };
+  struct Mark {
+    int node = JsonPick::kNone;
+    std::size_t group = 0, begin = 0;
+  };
+  JsonPick* pick_;
+  std::vector<Frame> frames_;
+  int next_ = JsonPick::kNone;
+
+  // The pick node of the value about to be written (after its separator) and its group.
+  Mark mark() {
+    Mark m;
+    if (!pick_) return m;
+    m.begin = out_.size();
+    if (frames_.empty()) {
+      m.node = 0;  // the root
+      return m;
+    }
+    Frame& f = frames_.back();
+    m.group = f.group;
+    m.node = f.object ? next_ : pick_->element(f.node, f.count++, m.group);
+    return m;
+  }
+  void picked(const Mark& m) {
+    if (!pick_) return;
+    if (const int column = pick_->column(m.node); column != JsonPick::kNone) pick_->add(column, m.group, m.begin, out_.size());
+  }
 
   static std::string_view finite(std::string_view number_text) {
     if (number_text.find_first_of("ni") != std::string_view::npos) return "null";  // inf, nan
@@ -151,11 +196,17 @@ class JsonWriter {
   void value(std::string_view text) {
     item();
     pending_key_ = false;
+    const Mark m = mark();
     out_ += text;
+    picked(m);
   }
   void open(char c) {
     item();
     pending_key_ = false;
+    if (pick_) {
+      const Mark m = mark();
+      frames_.push_back({m.node, 0, m.begin, m.group, c == '{'});
+    }
     out_ += c;
     has_items_.push_back(false);
   }
@@ -164,6 +215,11 @@ class JsonWriter {
     has_items_.pop_back();
     if (had) newline(has_items_.size());
     out_ += c;
+    if (pick_) {
+      const Frame f = frames_.back();
+      frames_.pop_back();
+      picked({f.node, f.group, f.begin});
+    }
   }
 };
 

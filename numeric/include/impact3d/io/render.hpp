@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/json_pick.hpp"
 #include "impact3d/numeric/problem.hpp"
 #include "impact3d/numeric/scalars.hpp"
 
@@ -15,6 +16,7 @@ struct RenderOptions {
   std::string format = "text";  // "text" | "json" | "jsonl" (the JSON document on one line)
   int digits = 0;               // text report; 0 = the precision's digits10
   Engine engine = Engine::generated;
+  JsonPick* pick = nullptr;  // json, jsonl: where the values it names are written (json_pick.hpp)
 };
 
 // Throws CaseError for inputs that fail the arithmetic checks, SolveError for no solution.

@@ -118,14 +118,14 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
 
 // `digits`: significant digits of every number; 0 means every digit the precision holds (max_digits10).
 // `extra`, when given, writes further top-level keys (the exact fractions of --precision exact).
-// `one_line`: the document on one line (JSON Lines), else indented.
+// `one_line`: the document on one line (JSON Lines), else indented. `pick`: see json_writer.hpp.
 template <typename Scalar>
 std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, int digits = 0,
                         bool snap_zeros = false, const std::function<void(JsonWriter&)>& extra = {},
-                        bool one_line = false) {
+                        bool one_line = false, JsonPick* pick = nullptr) {
   const Present<Scalar> p(c.units, digits > 0 ? digits : std::numeric_limits<Scalar>::max_digits10);
   const auto& f = p.f;
-  JsonWriter w(one_line);
+  JsonWriter w(one_line, pick);
   w.begin_object();
   w.key("name").string(c.name);
   if (!c.description.empty()) w.key("description").string(c.description);
