@@ -5,6 +5,7 @@
 // midway leaves only whole rows.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -394,6 +395,7 @@ TEST_CASE("batch's CSV cells are the JSON document's values, escapes, strategies
     REQUIRE(jsonl.status == 0);
     REQUIRE(table.status == 0);
     const nlohmann::ordered_json doc = nlohmann::ordered_json::parse(lines_of(jsonl.out).at(0));  // the strategy's key order
+    const std::string row_tokens = tokens(lines_of(jsonl.out).at(0));
     // Records, not lines: the name's newline sits inside a quoted cell (RFC 4180).
     std::vector<std::string> lines(1);
     bool quoted = false;
@@ -430,7 +432,20 @@ TEST_CASE("batch's CSV cells are the JSON document's values, escapes, strategies
           const auto ptr = nlohmann::ordered_json::json_pointer(pointer_of(name).to_string());
           if (!from.contains(ptr) || from.at(ptr).is_null()) CHECK(cells[col].empty());
           else if (from.at(ptr).is_string()) CHECK(cells[col] == from.at(ptr).get<std::string>());
-          else CHECK(std::stod(cells[col]) == from.at(ptr).get<double>());
+          else {
+            // The value, its sign (a -0 stays -0), and the text: a whole number token of the document.
+            const double x = std::stod(cells[col]), y = from.at(ptr).get<double>();
+            CHECK(x == y);
+            CHECK(std::signbit(x) == std::signbit(y));
+            bool whole_token = false;
+            for (std::size_t at = row_tokens.find(cells[col]); at != std::string::npos && !whole_token;
+                 at = row_tokens.find(cells[col], at + 1)) {
+              const std::size_t end = at + cells[col].size();
+              whole_token = at > 0 && std::string_view(":[,").find(row_tokens[at - 1]) != std::string_view::npos &&
+                            end < row_tokens.size() && std::string_view(",]}").find(row_tokens[end]) != std::string_view::npos;
+            }
+            CHECK(whole_token);
+          }
         }
         ++compared;
       }

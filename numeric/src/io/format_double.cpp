@@ -58,7 +58,7 @@ const Powers& powers() {
 
 constexpr u64 kTen16 = 10'000'000'000'000'000ULL, kTen17 = 100'000'000'000'000'000ULL;
 
-char* fallback(char* out, double x) { return std::to_chars(out, out + 32, x, std::chars_format::general, 17).ptr; }
+char* fallback(char* out, double x) { return std::to_chars(out, out + 24, x, std::chars_format::general, 17).ptr; }
 
 // printf's %g at precision 17 of N·10^(k-16), 10^16 ≤ N < 10^17: fixed notation when -4 ≤ k < 17,
 // exponential otherwise; trailing zeros and a bare point dropped.

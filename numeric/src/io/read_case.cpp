@@ -80,7 +80,7 @@ std::optional<bool> positive_definite_by_double(const std::array<Vector3, 3>& J)
 // lives no longer than the call that made it.
 class Where {
  public:
-  Where(std::string_view path) : whole_(path) {}
+  explicit Where(std::string_view path) : whole_(path) {}
   Where(const Where& parent, std::string_view key) : parent_(&parent), key_(key) {}
   Where(const Where& parent, std::size_t index) : parent_(&parent), index_(index) {}
   std::string str() const {
