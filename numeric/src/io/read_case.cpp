@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cmath>
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <initializer_list>
 #include <optional>
@@ -96,14 +97,13 @@ class Where {
   std::size_t index_ = kNone;
 };
 
-// Decided on the double when it is correctly rounded from the literal and far from the bound, else on
-// the decimal as written.
+// Decided on the double when it is correctly rounded from the literal and a factor of two inside the
+// limits (no rounding comes near that), else on the decimal as written.
+const double kFastMax = 0.5 * std::strtod(limits::kMaxMagnitude, nullptr), kFastMin = 2 * std::strtod(limits::kMinMagnitude, nullptr);
 bool in_magnitude_range(const Number& n) {
   const double a = std::abs(n.value);
-  return a != 0 && a <= 0.5e12 && a >= 2e-100;
+  return a != 0 && a <= kFastMax && a >= kFastMin;
 }
-static_assert(limits::kMaxMagnitude == std::string_view("1e12") && limits::kMinMagnitude == std::string_view("1e-100"),
-              "in_magnitude_range's margins are written for these limits");
 
 class Reader {
  public:
@@ -224,7 +224,11 @@ class Reader {
     if (auto* n = optional(v, "name")) veh.name = string(*n, Where(at, "name"));
     veh.mass = positive(required(v, at, "mass"), Where(at, "mass"));
     inertia(veh, required(v, at, "inertia"), Where(at, "inertia"));
-    static const JsonValue empty{Type::object};
+    static const JsonValue empty = [] {
+      JsonValue e;
+      e.type = Type::object;
+      return e;
+    }();
     const JsonValue* o = optional(v, "orientation_deg");
     if (const JsonValue* m = optional(v, "orientation_matrix")) {
       const Where mat(at, "orientation_matrix");
