@@ -10,6 +10,7 @@
 
 #include "impact3d/io/case_spec.hpp"
 #include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_path.hpp"
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/limits.hpp"
 
@@ -18,9 +19,6 @@ namespace {
 
 using Node = CaseColumns::Node;
 using io::JsonValue;
-
-constexpr std::size_t kMaxIndex = 63;  // an array index in a header path (a case has at most 64 strategies)
-constexpr int kMaxPathDepth = 8;
 
 bool json_number(std::string_view s) {
   std::size_t i = 0;
@@ -41,57 +39,17 @@ bool json_number(std::string_view s) {
   return i == s.size();
 }
 
-// One step of a header path: a key, or an index.
-struct Step {
-  std::string key;
-  std::size_t index = 0;
-  bool is_index = false;
-};
-
-std::vector<Step> parse_path(std::string_view path, const std::string& where) {
-  std::string_view p = path;
-  if (p.substr(0, 2) == "$.") p.remove_prefix(2);
-  else if (p.substr(0, 2) == "$[") p.remove_prefix(1);
-  std::vector<Step> steps;
-  std::size_t i = 0;
-  auto fail = [&](const std::string& problem) { throw io::CaseError(where, problem); };
-  while (i < p.size()) {
-    if (p[i] == '[') {
-      std::size_t j = i + 1, value = 0;
-      for (; j < p.size() && std::isdigit(static_cast<unsigned char>(p[j])); ++j)
-        value = std::min(value * 10 + static_cast<std::size_t>(p[j] - '0'), kMaxIndex + 1);  // saturated: no overflow
-      if (j == i + 1 || j >= p.size() || p[j] != ']') fail("expected an index [n] in the path");
-      if (value > kMaxIndex) fail(fmt::format("an index beyond {}", kMaxIndex));
-      steps.push_back({"", value, true});
-      i = j + 1;
-    } else {
-      if (!steps.empty()) {
-        if (p[i] != '.') fail("expected '.' or '[' in the path");
-        ++i;
-      }
-      const std::size_t start = i;
-      while (i < p.size() && (std::isalnum(static_cast<unsigned char>(p[i])) || p[i] == '_')) ++i;
-      if (i == start || std::isdigit(static_cast<unsigned char>(p[start]))) fail("expected a key (letters, digits, _) in the path");
-      if (i - start > io::limits::kKeyChars) fail(fmt::format("a key longer than {} characters", io::limits::kKeyChars));
-      steps.push_back({std::string(p.substr(start, i - start)), 0, false});
-    }
-    if (steps.size() > static_cast<std::size_t>(kMaxPathDepth)) fail(fmt::format("a path deeper than {} steps", kMaxPathDepth));
-  }
-  if (steps.empty()) fail("an empty path");
-  return steps;
-}
-
 // Fields the paths of one header may spell, containers and gaps included: a few per column, so that a
 // header of sparse indices cannot build a large tree.
 constexpr std::size_t kMaxNodes = 4 * io::limits::kCsvColumns;
 
-void insert(Node& root, const std::vector<Step>& steps, std::size_t column, const std::string& where, std::size_t& nodes) {
+void insert(Node& root, const io::JsonPath& steps, std::size_t column, const std::string& where, std::size_t& nodes) {
   Node* node = &root;
   node->kind = Node::Kind::object;
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    const Step& s = steps[k];
+    const io::PathStep& s = steps[k];
     Node* child = nullptr;
-    if (s.is_index) {
+    if (s.kind == io::PathStep::Kind::index) {
       if (node->kind != Node::Kind::array) throw io::CaseError(where, "an index where another column has a key");
       if (node->elements.size() <= s.index) {
         nodes += s.index + 1 - node->elements.size();
@@ -115,7 +73,7 @@ void insert(Node& root, const std::vector<Step>& steps, std::size_t column, cons
       if (!fresh) throw io::CaseError(where, "the same field as another column, or a field another column is inside");
       child->column = column;
     } else {
-      const Node::Kind want = steps[k + 1].is_index ? Node::Kind::array : Node::Kind::object;
+      const Node::Kind want = steps[k + 1].kind == io::PathStep::Kind::index ? Node::Kind::array : Node::Kind::object;
       if (fresh) child->kind = want;
       else if (child->kind == Node::Kind::leaf) throw io::CaseError(where, "inside a field another column fills");
     }
@@ -198,7 +156,7 @@ void put_text(std::string& out, std::string_view s) {
 // The columns of a result row: a path in the result, or in the whole document for those marked.
 struct ResultColumn {
   std::string name;
-  std::vector<Step> path;
+  io::JsonPath path;
   bool of_document = false;
 };
 
@@ -226,21 +184,11 @@ const std::vector<ResultColumn>& result_columns() {
     }
     for (const char* s : {"energy.before", "energy.after", "energy.loss", "rounding_bound"}) names.emplace_back(s);
     std::vector<ResultColumn> out;
-    for (const char* s : {"name", "units", "precision", "engine"}) out.push_back({s, parse_path(s, s), true});
-    for (const auto& n : names) out.push_back({n, parse_path(n, n), false});
+    for (const char* s : {"name", "units", "precision", "engine"}) out.push_back({s, io::parse_json_path(s, s), true});
+    for (const auto& n : names) out.push_back({n, io::parse_json_path(n, n), false});
     return out;
   }();
   return columns;
-}
-
-const JsonValue* at(const JsonValue& root, const std::vector<Step>& path) {
-  const JsonValue* v = &root;
-  for (const Step& s : path) {
-    if (s.is_index) v = v->is(JsonValue::Type::array) && s.index < v->size() ? &v->items[s.index] : nullptr;
-    else v = v->is(JsonValue::Type::object) ? v->find(s.key) : nullptr;
-    if (!v) return nullptr;
-  }
-  return v;
 }
 
 void put_value(std::string& out, const JsonValue* v) {
@@ -313,7 +261,7 @@ CaseColumns::CaseColumns(std::string_view header) {
   std::size_t nodes = 0;
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const std::string where = fmt::format("header column {} ({})", c + 1, io::quoted(cells[c].text.substr(0, 80)));
-    insert(root_, parse_path(cells[c].text, where), c, where, nodes);
+    insert(root_, io::parse_json_path(cells[c].text, where), c, where, nodes);
   }
   check_dense(root_, "$");
   columns_ = cells.size();
@@ -341,49 +289,16 @@ std::string result_header() {
   return out;
 }
 
-namespace {
-
-// A string as JsonWriter quotes it (json_writer.hpp: \", \\, \n and \u00XX), unquoted.
-std::string unquote(std::string_view q) {
-  std::string s;
-  auto bad = [] { return std::runtime_error("the result document's string does not read back"); };
-  if (q.size() < 2 || q.back() != '"') throw bad();
-  for (std::size_t i = 1; i + 1 < q.size(); ++i) {
-    if (q[i] != '\\') {
-      s += q[i];
-      continue;
-    }
-    if (++i + 1 >= q.size()) throw bad();
-    if (q[i] == 'n') s += '\n';
-    else if (q[i] == '"' || q[i] == '\\') s += q[i];
-    else if (q[i] == 'u' && i + 5 < q.size() && q.substr(i + 1, 2) == "00") {
-      const auto hex = [&](char c) { return c <= '9' ? c - '0' : c - 'a' + 10; };
-      s += static_cast<char>(hex(q[i + 3]) * 16 + hex(q[i + 4]));
-      i += 4;
-    } else {
-      throw bad();
-    }
-  }
-  return s;
-}
-
-}  // namespace
-
 io::JsonPick result_pick() {
   // Column c of the pick is result_columns()[c]; then each result's strategy, regime and warnings.
-  std::vector<std::vector<io::JsonPick::Step>> paths;
-  auto convert = [](const std::vector<Step>& path, bool of_result) {
-    std::vector<io::JsonPick::Step> out;
-    if (of_result) {
-      out.push_back({io::JsonPick::Step::Kind::key, "results", 0});
-      out.push_back({io::JsonPick::Step::Kind::any, {}, 0});
-    }
-    for (const Step& s : path)
-      out.push_back({s.is_index ? io::JsonPick::Step::Kind::index : io::JsonPick::Step::Kind::key, s.key, s.index});
+  std::vector<io::JsonPath> paths;
+  auto in_results = [](const io::JsonPath& path) {
+    io::JsonPath out = {io::PathStep::of_key("results"), io::PathStep::any_index()};
+    out.insert(out.end(), path.begin(), path.end());
     return out;
   };
-  for (const auto& c : result_columns()) paths.push_back(convert(c.path, !c.of_document));
-  for (const char* key : {"strategy", "regime", "warnings"}) paths.push_back(convert({Step{key}}, true));
+  for (const auto& c : result_columns()) paths.push_back(c.of_document ? c.path : in_results(c.path));
+  for (const char* key : {"strategy", "regime", "warnings"}) paths.push_back(in_results({io::PathStep::of_key(key)}));
   return io::JsonPick(paths);
 }
 
@@ -411,9 +326,9 @@ std::string result_rows(std::string_view document, const io::JsonPick& pick, lon
     if (i == kMissing) return nullptr;
     const std::string_view text = document.substr(spans[i].begin, spans[i].end - spans[i].begin);
     scratch = JsonValue{};
-    if (text.front() == '"') {
+    if (spans[i].string != io::JsonPick::kNoString) {
       scratch.type = JsonValue::Type::string;
-      scratch.text = unquote(text);
+      scratch.text.assign(pick.string(spans[i]));
     } else if (text.front() == '{' || text.front() == '[') {
       if (!io::parse_json_tree_fast(text, scratch, true)) throw std::runtime_error("the result document's value does not read back");
     } else if (text == "true" || text == "false") {

@@ -4,14 +4,14 @@
 
 namespace impact3d::io {
 
-JsonPick::JsonPick(const std::vector<std::vector<Step>>& paths) : nodes_(1) {
+JsonPick::JsonPick(const std::vector<JsonPath>& paths) : nodes_(1) {
   for (std::size_t c = 0; c < paths.size(); ++c) {
     std::size_t node = 0;
-    for (const Step& s : paths[c]) {
+    for (const PathStep& s : paths[c]) {
       int next = kNone;
       const Node& n = nodes_[node];
-      if (s.kind == Step::Kind::any) next = n.any;
-      else if (s.kind == Step::Kind::key) {
+      if (s.kind == PathStep::Kind::any) next = n.any;
+      else if (s.kind == PathStep::Kind::key) {
         for (const auto& [k, id] : n.members)
           if (k == s.key) next = id;
       } else {
@@ -21,8 +21,8 @@ JsonPick::JsonPick(const std::vector<std::vector<Step>>& paths) : nodes_(1) {
       if (next == kNone) {
         next = static_cast<int>(nodes_.size());
         Node& parent = nodes_[node];
-        if (s.kind == Step::Kind::any) parent.any = next;
-        else if (s.kind == Step::Kind::key) parent.members.emplace_back(s.key, next);
+        if (s.kind == PathStep::Kind::any) parent.any = next;
+        else if (s.kind == PathStep::Kind::key) parent.members.emplace_back(s.key, next);
         else parent.elements.emplace_back(s.index, next);
         nodes_.emplace_back();  // last: it may move every node
       }

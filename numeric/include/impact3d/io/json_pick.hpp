@@ -1,7 +1,8 @@
 // Values of a document taken by their paths as JsonWriter writes it, instead of reading the document
 // back: `batch --format csv` fills its cells so. A path is a chain of steps (a key, an index, or any
 // index); a value under an any-index step belongs to the group of that index ("results[].regime" of
-// the third result is in group 2).
+// the third result is in group 2). A string value is also kept as the writer was given it, so that no
+// reader has to undo the writer's escapes.
 #pragma once
 
 #include <cstddef>
@@ -10,26 +11,28 @@
 #include <utility>
 #include <vector>
 
+#include "impact3d/io/json_path.hpp"
+
 namespace impact3d::io {
 
 class JsonPick {
  public:
-  struct Step {
-    enum class Kind { key, index, any } kind = Kind::key;
-    std::string key;
-    std::size_t index = 0;
-  };
   // Where a picked value stands in the document's text: [begin, end), a number's or a literal's text,
-  // a string with its quotes, or a whole object or array.
+  // a string with its quotes, or a whole object or array; a string's own text is strings()[string].
+  static constexpr std::size_t kNoString = ~std::size_t{0};
   struct Span {
-    std::size_t column, group, begin, end;
+    std::size_t column, group, begin, end, string = kNoString;
   };
 
   // Path c is column c.
-  explicit JsonPick(const std::vector<std::vector<Step>>& paths);
+  explicit JsonPick(const std::vector<JsonPath>& paths);
 
   const std::vector<Span>& spans() const { return spans_; }
-  void clear() { spans_.clear(); }
+  std::string_view string(const Span& s) const { return strings_[s.string]; }
+  void clear() {
+    spans_.clear();
+    used_ = 0;
+  }
 
   // What JsonWriter asks, from the root node 0; kNone is nothing picked below.
   static constexpr int kNone = -1;
@@ -38,6 +41,11 @@ class JsonPick {
   int column(int node) const { return node == kNone ? kNone : nodes_[static_cast<std::size_t>(node)].column; }
   void add(int column, std::size_t group, std::size_t begin, std::size_t end) {
     spans_.push_back({static_cast<std::size_t>(column), group, begin, end});
+  }
+  void add_string(int column, std::size_t group, std::size_t begin, std::size_t end, std::string_view text) {
+    if (used_ == strings_.size()) strings_.emplace_back();
+    strings_[used_].assign(text);  // the slots keep their capacity from document to document
+    spans_.push_back({static_cast<std::size_t>(column), group, begin, end, used_++});
   }
 
  private:
@@ -49,6 +57,8 @@ class JsonPick {
   };
   std::vector<Node> nodes_;
   std::vector<Span> spans_;
+  std::vector<std::string> strings_;
+  std::size_t used_ = 0;
 };
 
 }  // namespace impact3d::io

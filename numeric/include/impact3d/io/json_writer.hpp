@@ -75,7 +75,8 @@ class JsonWriter {
     pending_key_ = false;
     const Mark m = mark();
     append_quoted(out_, s);
-    picked(m);
+    if (pick_)
+      if (const int column = pick_->column(m.node); column != JsonPick::kNone) pick_->add_string(column, m.group, m.begin, out_.size(), s);
   }
   void boolean(bool b) { value(b ? "true" : "false"); }
   void null() { value("null"); }
