@@ -191,16 +191,6 @@ const std::vector<ResultColumn>& result_columns() {
   return columns;
 }
 
-void put_value(std::string& out, const JsonValue* v) {
-  if (!v) return;
-  switch (v->type) {
-    case JsonValue::Type::number: out += v->text; break;
-    case JsonValue::Type::string: put_text(out, v->text); break;
-    case JsonValue::Type::boolean: out += v->flag ? "true" : "false"; break;
-    default: break;  // null, and no container is a column
-  }
-}
-
 // The strategy as --strategy writes it: name:key=value,...
 std::string strategy_text(const JsonValue* s) {
   if (!s || !s->is(JsonValue::Type::object)) return {};
@@ -299,7 +289,7 @@ io::JsonPick result_pick() {
   };
   for (const auto& c : result_columns()) paths.push_back(c.of_document ? c.path : in_results(c.path));
   for (const char* key : {"strategy", "regime", "warnings"}) paths.push_back(in_results({io::PathStep::of_key(key)}));
-  return io::JsonPick(paths);
+  return io::JsonPick(paths, true);
 }
 
 std::string result_rows(std::string_view document, const io::JsonPick& pick, long line) {
@@ -319,41 +309,38 @@ std::string result_rows(std::string_view document, const io::JsonPick& pick, lon
     else
       for (std::size_t k = 0; k < results; ++k) at[k * width + s.column] = i;
   }
-  // A value as the document has it: a string or a container read as JSON (they are short), anything
-  // else its text.
-  auto value = [&](std::size_t k, std::size_t column, JsonValue& scratch) -> const JsonValue* {
+  std::string out;
+  // A cell as the document has it: a string as the writer was given it, a number or literal as written
+  // (null: an empty cell).
+  auto cell = [&](std::size_t k, std::size_t column) {
+    const std::size_t i = at[k * width + column];
+    if (i == kMissing) return;
+    const std::string_view text = document.substr(spans[i].begin, spans[i].end - spans[i].begin);
+    if (spans[i].string != io::JsonPick::kNoString) put_text(out, pick.string(spans[i]));
+    else if (text != "null") out += text;
+  };
+  // The strategy and the warnings are a container each: short, read as JSON.
+  auto container = [&](std::size_t k, std::size_t column, JsonValue& scratch) -> const JsonValue* {
     const std::size_t i = at[k * width + column];
     if (i == kMissing) return nullptr;
-    const std::string_view text = document.substr(spans[i].begin, spans[i].end - spans[i].begin);
     scratch = JsonValue{};
-    if (spans[i].string != io::JsonPick::kNoString) {
-      scratch.type = JsonValue::Type::string;
-      scratch.text.assign(pick.string(spans[i]));
-    } else if (text.front() == '{' || text.front() == '[') {
-      if (!io::parse_json_tree_fast(text, scratch, true)) throw std::runtime_error("the result document's value does not read back");
-    } else if (text == "true" || text == "false") {
-      scratch.type = JsonValue::Type::boolean;
-      scratch.flag = text == "true";
-    } else if (text != "null") {
-      scratch.type = JsonValue::Type::number;
-      scratch.text.assign(text);
-    }
+    if (!io::parse_json_tree_fast(document.substr(spans[i].begin, spans[i].end - spans[i].begin), scratch, true))
+      throw std::runtime_error("the result document's value does not read back");
     return &scratch;
   };
-  std::string out;
   JsonValue scratch;
   for (std::size_t k = 0; k < results; ++k) {
     out += fmt::format("{},{},", line, k);
     for (std::size_t c = 0; c < columns; ++c)
-      if (result_columns()[c].of_document) out += ',', put_value(out, value(k, c, scratch));
+      if (result_columns()[c].of_document) out += ',', cell(k, c);
     out += ',';
-    put_text(out, strategy_text(value(k, strategy, scratch)));
+    put_text(out, strategy_text(container(k, strategy, scratch)));
     out += ',';
-    put_value(out, value(k, regime, scratch));
+    cell(k, regime);
     for (std::size_t c = 0; c < columns; ++c)
-      if (!result_columns()[c].of_document) out += ',', put_value(out, value(k, c, scratch));
+      if (!result_columns()[c].of_document) out += ',', cell(k, c);
     std::string joined;
-    if (const JsonValue* w = value(k, warnings, scratch); w && w->is(JsonValue::Type::array))
+    if (const JsonValue* w = container(k, warnings, scratch); w && w->is(JsonValue::Type::array))
       for (const auto& item : w->items) joined += (joined.empty() ? "" : " | ") + item.text;
     out += ',';
     put_text(out, joined);

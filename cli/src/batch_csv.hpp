@@ -48,9 +48,10 @@ class CaseColumns {
 // The result CSV: its header line, and the lines of one case (one per result of its document, `line`
 // first), or of a case that was rejected.
 std::string result_header();
-// What result_rows takes from each result document, picked as the document is written (RenderOptions).
+// What result_rows takes from each result document, picked as the document is written (RenderOptions);
+// only the picked values are written, each as it would read in the whole document.
 io::JsonPick result_pick();
-// The lines of one case, from its document and what `pick` recorded while it was written.
+// The lines of one case, from the writer's text and what `pick` recorded while it was written.
 std::string result_rows(std::string_view document, const io::JsonPick& pick, long line);
 std::string error_row(long line, const std::string& problem);
 

@@ -4,7 +4,7 @@
 
 namespace impact3d::io {
 
-JsonPick::JsonPick(const std::vector<JsonPath>& paths) : nodes_(1) {
+JsonPick::JsonPick(const std::vector<JsonPath>& paths, bool only_picked) : nodes_(1), only_picked_(only_picked) {
   for (std::size_t c = 0; c < paths.size(); ++c) {
     std::size_t node = 0;
     for (const PathStep& s : paths[c]) {

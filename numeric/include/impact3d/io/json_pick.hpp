@@ -24,8 +24,10 @@ class JsonPick {
     std::size_t column, group, begin, end, string = kNoString;
   };
 
-  // Path c is column c.
-  explicit JsonPick(const std::vector<JsonPath>& paths);
+  // Path c is column c. `only_picked`: the writer writes the picked values and nothing else, so that
+  // its text is no longer a JSON document but every span reads as it would in the whole document.
+  explicit JsonPick(const std::vector<JsonPath>& paths, bool only_picked = false);
+  bool only_picked() const { return only_picked_; }
 
   const std::vector<Span>& spans() const { return spans_; }
   std::string_view string(const Span& s) const { return strings_[s.string]; }
@@ -56,6 +58,7 @@ class JsonPick {
     int column = kNone;
   };
   std::vector<Node> nodes_;
+  bool only_picked_;
   std::vector<Span> spans_;
   std::vector<std::string> strings_;
   std::size_t used_ = 0;

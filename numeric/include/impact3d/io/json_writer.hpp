@@ -17,12 +17,16 @@ class JsonWriter {
  public:
   // Indented (a file a person reads), or one line (JSON Lines: `batch`), with ", " and ": " between items.
   // `pick`, when given, records where the values it names are written (json_pick.hpp).
-  explicit JsonWriter(bool one_line = false, JsonPick* pick = nullptr) : one_line_(one_line), pick_(pick) { out_.reserve(4096); }
+  explicit JsonWriter(bool one_line = false, JsonPick* pick = nullptr)
+      : one_line_(one_line), pick_(pick), only_picked_(pick && pick->only_picked()) {
+    out_.reserve(4096);
+  }
   void begin_object() { open('{'); }
   void end_object() { close('}'); }
   void begin_array() { open('['); }
   void end_array() { close(']'); }
   JsonWriter& key(std::string_view k) {
+    key_begin_ = out_.size();
     if (pick_) next_ = pick_->member(frames_.empty() ? JsonPick::kNone : frames_.back().node, k);
     if (one_line_ && !pending_key_ && !has_items_.empty() && k.size() <= kShortKey && plain(k)) {
       // The keys the program writes, with the separator before them: one append, no escaping.
@@ -47,18 +51,33 @@ class JsonWriter {
   // A number whose text `format(std::string&)` appends in place, so that no string is made per number.
   template <typename Format>
   void number(Format&& format) {
+    const std::size_t from = start();
     item();
     pending_key_ = false;
     const Mark m = mark();
+    if (skipped(m, from)) return;
     append_number(format);
     picked(m);
   }
   // A short array of `n` numbers on one line, element i appended by `format(std::string&, i)`.
   template <typename Format>
   void number_row(int n, Format&& format) {
+    const std::size_t from = start();
     item();
     pending_key_ = false;
     const Mark row = mark();
+    if (row.node == JsonPick::kNone && skipped(row, from)) return;  // no element of the row is picked either
+    if (only_picked_ && whole_ == 0 && pick_->column(row.node) == JsonPick::kNone) {
+      out_.resize(from);  // some elements are picked: they are written alone
+      for (int i = 0; i < n; ++i) {
+        Mark m{JsonPick::kNone, row.group, out_.size()};
+        m.node = pick_->element(row.node, static_cast<std::size_t>(i), m.group);
+        if (pick_->column(m.node) == JsonPick::kNone) continue;
+        append_number([&](std::string& out) { format(out, i); });
+        picked(m);
+      }
+      return;
+    }
     out_ += '[';
     for (int i = 0; i < n; ++i) {
       if (i) out_ += ", ";
@@ -71,9 +90,11 @@ class JsonWriter {
     picked(row);
   }
   void string(std::string_view s) {
+    const std::size_t from = start();
     item();
     pending_key_ = false;
     const Mark m = mark();
+    if (skipped(m, from)) return;
     append_quoted(out_, s);
     if (pick_)
       if (const int column = pick_->column(m.node); column != JsonPick::kNone) pick_->add_string(column, m.group, m.begin, out_.size(), s);
@@ -128,7 +149,7 @@ class JsonWriter {
   struct Frame {
     int node;
     std::size_t count, begin, group;
-    bool object;
+    bool object, whole;  // whole: the container is picked, or is inside one that is
   };
   struct Mark {
     int node = JsonPick::kNone;
@@ -137,6 +158,19 @@ class JsonWriter {
   JsonPick* pick_;
   std::vector<Frame> frames_;
   int next_ = JsonPick::kNone;
+  // Writing only the picked values: how many open containers are written whole, and where the last key
+  // began (a value that is not written takes its key back).
+  bool only_picked_;
+  int whole_ = 0;
+  std::size_t key_begin_ = 0;
+
+  std::size_t start() const { return pending_key_ ? key_begin_ : out_.size(); }
+  // Whether the value at `m` is left out; then the text written for it since `from` is taken back.
+  bool skipped(const Mark& m, std::size_t from) {
+    if (!only_picked_ || whole_ > 0 || pick_->column(m.node) != JsonPick::kNone) return false;
+    out_.resize(from);
+    return true;
+  }
 
   // The pick node of the value about to be written (after its separator) and its group.
   Mark mark() {
@@ -195,32 +229,45 @@ class JsonWriter {
     out_.append(2 * depth, ' ');
   }
   void value(std::string_view text) {
+    const std::size_t from = start();
     item();
     pending_key_ = false;
     const Mark m = mark();
+    if (skipped(m, from)) return;
     out_ += text;
     picked(m);
   }
   void open(char c) {
+    const std::size_t from = start();
     item();
     pending_key_ = false;
-    if (pick_) {
-      const Mark m = mark();
-      frames_.push_back({m.node, 0, m.begin, m.group, c == '{'});
-    }
-    out_ += c;
     has_items_.push_back(false);
+    if (!pick_) {
+      out_ += c;
+      return;
+    }
+    const Mark m = mark();
+    const bool whole = whole_ > 0 || pick_->column(m.node) != JsonPick::kNone;
+    frames_.push_back({m.node, 0, m.begin, m.group, c == '{', whole});
+    whole_ += whole;
+    if (only_picked_ && !whole) out_.resize(from);  // its picked members, if any, are written alone
+    else out_ += c;
   }
   void close(char c) {
     const bool had = has_items_.back();
     has_items_.pop_back();
+    if (!pick_) {
+      if (had) newline(has_items_.size());
+      out_ += c;
+      return;
+    }
+    const Frame f = frames_.back();
+    frames_.pop_back();
+    whole_ -= f.whole;
+    if (only_picked_ && !f.whole) return;
     if (had) newline(has_items_.size());
     out_ += c;
-    if (pick_) {
-      const Frame f = frames_.back();
-      frames_.pop_back();
-      picked({f.node, f.group, f.begin});
-    }
+    picked({f.node, f.group, f.begin});
   }
 };
 
