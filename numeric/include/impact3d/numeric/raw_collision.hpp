@@ -46,13 +46,20 @@ Scene<Scalar> scene_of(const RawCollision<Scalar>& c) {
   } else {
     for (int k = 0; k < 9; ++k) sc[k] = sin_cos_deg(deg[k]);
   }
+  // Written in place, member by member: building bodies as temporaries and copying them in cost more
+  // than the arithmetic (stores forwarded to wider loads).
   Scene<Scalar> s;
   for (int i = 0; i < 2; ++i) {
     const RawVehicle<Scalar>& v = c.vehicle[i];
+    RigidBody<Scalar>& b = s.body[i];
+    b.mass = v.mass;
     // Symmetric by construction: the condition bounds read the upper triangle, Eigen's solves the lower.
-    Mat3<Scalar> J = v.J_B;
-    J(1, 0) = J(0, 1), J(2, 0) = J(0, 2), J(2, 1) = J(1, 2);
-    s.body[i] = {v.mass, J, rotation_zyx(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]), v.v_W, v.w_B, v.p_CgIc_B};
+    for (int col = 0; col < 3; ++col)
+      for (int row = 0; row < 3; ++row) b.J_B(row, col) = row <= col ? v.J_B(row, col) : v.J_B(col, row);
+    b.R_WB = rotation_zyx(sc[3 * i], sc[3 * i + 1], sc[3 * i + 2]);
+    b.v_W = v.v_W;
+    b.w_B = v.w_B;
+    b.p_CgIc_B = v.p_CgIc_B;
   }
   s.R_WC = rotation_zyx(sc[6], sc[7], sc[8]);
   s.restitution = c.restitution;
