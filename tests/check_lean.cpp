@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 #include <random>
@@ -144,6 +145,45 @@ TEMPLATE_TEST_CASE("solve_lean gives analyze's impulse, ratios, velocities and w
   CHECK(not_approaching == 15);
   CHECK(compared == 135 * 12 * 2);
   CHECK(undecided == 135 * 2);
+}
+
+TEMPLATE_TEST_CASE("solve_lean decides as analyze does on both sides of the undecided band, and on ill-conditioned K",
+                   "[lean]", double, long double) {
+  // mu = GIR (1 + k eps) and Wach's mu = CIR (1 + k eps) for k from 1 to 2^40 either way: the band where
+  // the lean path's cheap bound on kappa(K) calls the decision close but kappa itself does not, and the
+  // band where both do, are crossed on every scene. Then the same on scenes whose K is ill-conditioned
+  // (one body 10^6 times lighter and smaller, impulse centre far out), where the bounds are wide.
+  std::mt19937_64 g(20261122);
+  const TestType eps = std::numeric_limits<TestType>::epsilon();
+  int compared = 0, scenes = 0, straddled = 0, undecided = 0, decided = 0;
+  for (int c = 0; c < 40; ++c) {
+    Scene<double> s = random_scene(g);
+    if (c % 2) {
+      s.body[1].mass *= 1e-6;
+      s.body[1].J_B *= 1e-9;
+      s.body[1].p_CgIc_B *= 40;
+    }
+    const Scene<TestType> t = cast_scene<TestType>(s);
+    if (!(relative_velocity_C(t).x() > 0)) continue;  // not approaching: nothing to decide
+    ++scenes;
+    const auto a = analyze(t, {PcCrash<TestType>{0}, Wach<TestType>{0}});
+    const TestType gir = *a.solutions[0].impulse.gir, cir = *a.solutions[1].impulse.cir;
+    const int undecided_before = undecided, decided_before = decided;
+    for (int sign : {-1, 1})
+      for (int e2 = 0; e2 <= 40; e2 += 2) {
+        const TestType f = 1 + sign * std::ldexp(eps, e2);
+        for (const Strategy<TestType>& st : {Strategy<TestType>(PcCrash<TestType>{gir * f}), Strategy<TestType>(Wach<TestType>{cir * f})})
+          for (Engine e : kEngines) {
+            compared += compare(t, st, e);
+            (has_warning(solve_lean(t, st, Want::impulse, e).warnings, WarningCode::undecided) ? undecided : decided)++;
+          }
+      }
+    straddled += undecided > undecided_before && decided > decided_before;
+  }
+  INFO(scenes << " scenes, " << undecided << " undecided, " << decided << " decided");
+  CHECK(scenes >= 30);
+  CHECK(compared == scenes * 2 * 21 * 2 * 2);
+  CHECK(straddled == scenes);  // on every scene the sweep reaches into the band and out of it
 }
 
 TEST_CASE("solve_lean reports an undefined plane, a singular system and a separating contact as analyze does",
