@@ -88,4 +88,42 @@ double normal_quantile(double p) {
   return q < 0 ? -v : v;
 }
 
+double normal_upper_tail(double x) {
+  if (x != x) return x;
+  if (x < 0) return 1 - normal_upper_tail(-x);
+  if (x > 38.5) return 0;  // below the smallest subnormal
+  // phi(x) with x^2 split so that the large part of the exponent is exact: x = h + l, h with 22 bits.
+  const double h = std::ldexp(std::floor(std::ldexp(x, 16)), -16), l = x - h;
+  const double gauss = portable_exp(-0.5 * h * h) * portable_exp(-0.5 * l * (x + h)), phi = 0.39894228040143267794 * gauss;
+  if (x < 0.6640625) {
+    // Q = 1/2 - phi(x) (x + x^3/3 + x^5/(3 5) + ...): positive terms; Q >= 1/4 here, so the
+    // subtraction loses at most a bit.
+    double term = x, sum = x;
+    for (int n = 1; n < 60 && term > sum * 0x1p-56; ++n) {
+      term *= x * x / (2 * n + 1);
+      sum += term;
+    }
+    return 0.5 - phi * sum;
+  }
+  if (x < 5.5) {
+    // Cody's erfc(y) = e^(-y^2) P(y) / Q(y) for y = x / sqrt 2 in [0.46875, 4] (Math. Comp. 23 (1969)
+    // 631-637, table III, about 18 digits), with e^(-y^2) = e^(-x^2/2) taken from x itself.
+    static constexpr double p[9] = {1.23033935479799725272e3, 2.05107837782607146532e3, 1.71204761263407058314e3,
+                                    8.81952221241769090411e2, 2.98635138197400131132e2, 6.61191906371416294775e1,
+                                    8.88314979438837594118e0, 5.64188496988670089180e-1, 2.15311535474403846343e-8};
+    static constexpr double q[9] = {1.23033935480374942043e3, 3.43936767414372163696e3, 4.36261909014324715820e3,
+                                    3.29079923573345962678e3, 1.62138957456669018874e3, 5.37181101862009857509e2,
+                                    1.17693950891312499305e2, 1.57449261107098347253e1, 1.0};
+    const double y = x * 0.70710678118654752440;
+    return 0.5 * gauss * (horner(p, y) / horner(q, y));
+  }
+  // Laplace's continued fraction Q = phi / (x + 1/(x + 2/(x + 3/(x + ...)))), from a fixed depth up:
+  // at x = 5.5 its 60th convergent is well within 2^-56.
+  double f = x;
+  for (int k = 60; k >= 1; --k) f = x + k / f;
+  return phi / f;
+}
+
+double normal_cdf(double x) { return normal_upper_tail(-x); }
+
 }  // namespace impact3d::uncertainty
