@@ -1,0 +1,214 @@
+#include "impact3d/io/read_uncertainty.hpp"
+
+#include <cmath>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_tree.hpp"
+#include "impact3d/io/limits.hpp"
+
+namespace impact3d::io {
+namespace {
+
+using Type = JsonValue::Type;
+using uncertainty::Distribution;
+using Kind = Distribution::Kind;
+
+[[noreturn]] void fail(const std::string& at, const std::string& problem) { throw CaseError(at, problem); }
+
+std::string member(const std::string& at, std::string_view key) { return at + "." + std::string(key); }
+
+void only_keys(const JsonValue& v, const std::string& at, std::initializer_list<std::string_view> allowed) {
+  for (const std::string& k : v.keys) {
+    bool known = false;
+    for (std::string_view a : allowed) known = known || k == a;
+    if (!known) fail(at, fmt::format("unknown key {}", io::quoted(k)));
+  }
+}
+
+const JsonValue& need(const JsonValue& v, const std::string& at, std::string_view key, Type type, const char* what) {
+  const JsonValue* m = v.find(key);
+  if (!m) fail(at, fmt::format("missing \"{}\"", key));
+  if (!m->is(type)) fail(member(at, key), fmt::format("must be {}", what));
+  return *m;
+}
+
+// A count written as a plain non-negative integer literal, at most `most`.
+std::uint64_t count(const JsonValue& v, const std::string& at, std::uint64_t least, std::uint64_t most) {
+  if (!v.is(Type::number)) fail(at, "must be a whole number");
+  const std::string& t = v.text;
+  if (t.empty() || t.size() > 20 || t.find_first_not_of("0123456789") != std::string::npos)
+    fail(at, fmt::format("must be a whole number written in digits (got {})", printable(t)));
+  std::uint64_t n = 0;
+  for (const char c : t) {
+    const std::uint64_t digit = static_cast<std::uint64_t>(c - '0');
+    if (n > (UINT64_MAX - digit) / 10) fail(at, fmt::format("must be at most {}", most));
+    n = n * 10 + digit;
+  }
+  if (n < least || n > most) fail(at, fmt::format("must be from {} to {} (got {})", least, most, t));
+  return n;
+}
+
+// A finite parameter within the case numbers' magnitudes.
+double parameter(const JsonValue& v, const std::string& at, std::string_view key) {
+  const JsonValue& m = need(v, at, key, Type::number, "a number");
+  if (!std::isfinite(m.number) || std::fabs(m.number) > 1e12)
+    fail(member(at, key), fmt::format("must be a finite number of magnitude at most 1e12 (got {})", printable(m.text)));
+  return m.number;
+}
+
+double positive(const JsonValue& v, const std::string& at, std::string_view key) {
+  const double x = parameter(v, at, key);
+  if (!(x > 0)) fail(member(at, key), fmt::format("must be > 0 (got {})", printable(v.find(key)->text)));
+  return x;
+}
+
+Distribution distribution(const JsonValue& v, const std::string& at) {
+  const JsonValue& name = need(v, at, "distribution", Type::string, "a string");
+  Distribution d;
+  if (!uncertainty::kind_of(name.text, d.kind))
+    fail(member(at, "distribution"), fmt::format("unknown distribution {} (normal, truncated-normal, uniform, triangular, lognormal, discrete)", io::quoted(name.text)));
+  auto ordered = [&](std::string_view lo, double a, std::string_view hi, double b, bool strict) {
+    if (strict ? !(a < b) : !(a <= b)) fail(member(at, hi), fmt::format("must be {} \"{}\"", strict ? "above" : "at least", lo));
+  };
+  switch (d.kind) {
+    case Kind::normal:
+      only_keys(v, at, {"path", "distribution", "mean", "sd"});
+      d.mean = parameter(v, at, "mean"), d.sd = positive(v, at, "sd");
+      break;
+    case Kind::truncated_normal:
+      only_keys(v, at, {"path", "distribution", "mean", "sd", "min", "max"});
+      d.mean = parameter(v, at, "mean"), d.sd = positive(v, at, "sd");
+      d.min = parameter(v, at, "min"), d.max = parameter(v, at, "max");
+      ordered("min", d.min, "max", d.max, true);
+      break;
+    case Kind::uniform:
+      only_keys(v, at, {"path", "distribution", "min", "max"});
+      d.min = parameter(v, at, "min"), d.max = parameter(v, at, "max");
+      ordered("min", d.min, "max", d.max, true);
+      break;
+    case Kind::triangular:
+      only_keys(v, at, {"path", "distribution", "min", "mode", "max"});
+      d.min = parameter(v, at, "min"), d.mode = parameter(v, at, "mode"), d.max = parameter(v, at, "max");
+      ordered("min", d.min, "max", d.max, true);
+      ordered("min", d.min, "mode", d.mode, false);
+      ordered("mode", d.mode, "max", d.max, false);
+      break;
+    case Kind::lognormal:
+      only_keys(v, at, {"path", "distribution", "median", "sigma"});
+      d.median = positive(v, at, "median"), d.sigma = positive(v, at, "sigma");
+      if (d.sigma > 10) fail(member(at, "sigma"), "must be at most 10 (a factor of e^10 per standard deviation)");
+      break;
+    case Kind::discrete: {
+      only_keys(v, at, {"path", "distribution", "values", "weights"});
+      const JsonValue& values = need(v, at, "values", Type::array, "an array of numbers");
+      const std::string vat = member(at, "values");
+      if (values.size() == 0 || values.size() > kMaxDiscreteValues)
+        fail(vat, fmt::format("must hold 1 to {} numbers", kMaxDiscreteValues));
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        const JsonValue& x = values.items[i];
+        const std::string xat = fmt::format("{}[{}]", vat, i);
+        if (!x.is(Type::number) || !std::isfinite(x.number) || std::fabs(x.number) > 1e12)
+          fail(xat, "must be a finite number of magnitude at most 1e12");
+        d.values.push_back(x.number);
+      }
+      std::vector<double> weights(values.size(), 1.0);
+      if (const JsonValue* w = v.find("weights")) {
+        const std::string wat = member(at, "weights");
+        if (!w->is(Type::array) || w->size() != values.size()) fail(wat, fmt::format("must be an array of {} numbers, one per value", values.size()));
+        double total = 0;
+        for (std::size_t i = 0; i < w->size(); ++i) {
+          const JsonValue& x = w->items[i];
+          if (!x.is(Type::number) || !std::isfinite(x.number) || x.number < 0 || x.number > 1e12)
+            fail(fmt::format("{}[{}]", wat, i), "must be a number from 0 to 1e12");
+          total += weights[i] = x.number;
+        }
+        if (!(total > 0)) fail(wat, "must not all be 0");
+      }
+      d.cumulative = uncertainty::cumulative_weights(weights);
+      break;
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+UncertaintySpec read_uncertainty(const std::string& json_text) {
+  if (json_text.size() > limits::kCaseFileBytes) fail("$", fmt::format("larger than {} bytes", limits::kCaseFileBytes));
+  const JsonValue root = parse_json_tree(json_text);
+  if (!root.is(Type::object)) fail("$", "must be an object");
+  only_keys(root, "$", {"samples", "seed", "inputs", "correlations"});
+  UncertaintySpec spec;
+  if (const JsonValue* s = root.find("samples")) spec.samples = count(*s, "$.samples", 1, kMaxSamples);
+  if (const JsonValue* s = root.find("seed")) spec.seed = count(*s, "$.seed", 0, UINT64_MAX);
+  const JsonValue& inputs = need(root, "$", "inputs", Type::array, "an array of inputs");
+  if (inputs.size() == 0 || inputs.size() > kMaxUncertainInputs) fail("$.inputs", fmt::format("must hold 1 to {} inputs", kMaxUncertainInputs));
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const std::string at = fmt::format("$.inputs[{}]", i);
+    const JsonValue& v = inputs.items[i];
+    if (!v.is(Type::object)) fail(at, "must be an object");
+    UncertainInput in;
+    in.path_text = need(v, at, "path", Type::string, "a string").text;
+    in.path = parse_json_path(in.path_text, member(at, "path"));
+    for (const UncertainInput& earlier : spec.inputs)
+      if (earlier.path_text == in.path_text) fail(member(at, "path"), fmt::format("{} is given twice", io::quoted(in.path_text)));
+    in.distribution = distribution(v, at);
+    spec.inputs.push_back(std::move(in));
+  }
+  if (const JsonValue* cs = root.find("correlations")) {
+    if (!cs->is(Type::array)) fail("$.correlations", "must be an array");
+    const std::size_t most = spec.inputs.size() * (spec.inputs.size() - 1) / 2;
+    if (cs->size() > most) fail("$.correlations", fmt::format("more than the {} pairs of the inputs", most));
+    for (std::size_t k = 0; k < cs->size(); ++k) {
+      const std::string at = fmt::format("$.correlations[{}]", k);
+      const JsonValue& c = cs->items[k];
+      if (!c.is(Type::object)) fail(at, "must be an object");
+      only_keys(c, at, {"paths", "rho"});
+      const JsonValue& paths = need(c, at, "paths", Type::array, "an array of two input paths");
+      if (paths.size() != 2) fail(member(at, "paths"), "must name two inputs");
+      std::size_t pair[2];
+      for (int j = 0; j < 2; ++j) {
+        const JsonValue& p = paths.items[static_cast<std::size_t>(j)];
+        const std::string pat = fmt::format("{}.paths[{}]", at, j);
+        if (!p.is(Type::string)) fail(pat, "must be a string");
+        std::size_t found = spec.inputs.size();
+        for (std::size_t i = 0; i < spec.inputs.size(); ++i)
+          if (spec.inputs[i].path_text == p.text) found = i;
+        if (found == spec.inputs.size()) fail(pat, fmt::format("{} is not one of the inputs", io::quoted(p.text)));
+        pair[j] = found;
+      }
+      if (pair[0] == pair[1]) fail(member(at, "paths"), "must name two different inputs");
+      for (const auto& earlier : spec.correlations)
+        if ((earlier.a == pair[0] && earlier.b == pair[1]) || (earlier.a == pair[1] && earlier.b == pair[0]))
+          fail(member(at, "paths"), "this pair is correlated twice");
+      const double rho = need(c, at, "rho", Type::number, "a number").number;
+      if (!(rho > -1 && rho < 1)) fail(member(at, "rho"), fmt::format("must be strictly between -1 and 1 (got {})", printable(c.find("rho")->text)));
+      spec.correlations.push_back({pair[0], pair[1], rho});
+    }
+    (void)make_sampler(spec);  // positive definite, or the error naming the inputs
+  }
+  return spec;
+}
+
+uncertainty::Sampler make_sampler(const UncertaintySpec& spec) {
+  std::vector<Distribution> ds;
+  for (const UncertainInput& in : spec.inputs) ds.push_back(in.distribution);
+  try {
+    return uncertainty::Sampler(std::move(ds), spec.correlations, spec.seed);
+  } catch (const uncertainty::NotPositiveDefinite& e) {
+    std::string with;
+    for (const auto& c : spec.correlations)
+      if (c.a == e.input || c.b == e.input) {
+        const std::size_t other = c.a == e.input ? c.b : c.a;
+        if (other < e.input) with += (with.empty() ? "" : ", ") + io::quoted(spec.inputs[other].path_text);
+      }
+    fail("$.correlations", fmt::format("not positive definite: the correlations of {} with {} cannot all hold with the others",
+                                       io::quoted(spec.inputs[e.input].path_text), with.empty() ? "the inputs before it" : with));
+  }
+}
+
+}  // namespace impact3d::io
