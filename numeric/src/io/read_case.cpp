@@ -426,4 +426,6 @@ CaseSpec read_case(const std::string& json_text) {
   return Reader().read(parse_json_tree(json_text));
 }
 
+CaseSpec read_case_tree(const JsonValue& root) { return Reader().read(root); }
+
 }  // namespace impact3d::io

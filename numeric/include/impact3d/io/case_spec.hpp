@@ -85,6 +85,9 @@ CaseError no_solution(const CaseSpec& spec, const SolveError& e);
 
 // Parses and validates everything that needs no arithmetic; throws CaseError.
 CaseSpec read_case(const std::string& json_text);
+// The same from a parsed tree (json_tree.hpp): for variants of one case, parsed once.
+struct JsonValue;
+CaseSpec read_case_tree(const JsonValue& root);
 
 // The whole file, at most `max_bytes`; CaseError (path = the file) when it cannot be read or is larger.
 std::string read_text_file(const std::string& path, std::size_t max_bytes = limits::kCaseFileBytes);
