@@ -29,7 +29,11 @@ execute_process(COMMAND ${NM} --defined-only ${OBJECT} OUTPUT_VARIABLE raw_symbo
 if(rc)
   message(FATAL_ERROR "${NM} failed on ${OBJECT}")
 endif()
-string(REGEX MATCHALL "_GLOBAL__sub_I_[A-Za-z0-9_.$]+" initializers "${raw_symbols}")
+# GCC's _GLOBAL__sub_I_* may call __static_initialization_and_destruction_* when it is not inlined, and
+# Clang's initializers are __cxx_global_var_init*: every one of them is disassembled.
+string(REGEX MATCHALL "(_GLOBAL__sub_I_|__static_initialization_and_destruction_|__cxx_global_var_init)[A-Za-z0-9_.$]*"
+       initializers "${raw_symbols}")
+list(REMOVE_DUPLICATES initializers)
 set(instructions 0)
 foreach(init IN LISTS initializers)
   execute_process(COMMAND ${OBJDUMP} -d --no-show-raw-insn --disassemble=${init} ${OBJECT} OUTPUT_VARIABLE startup

@@ -18,18 +18,18 @@ constexpr struct {
 
 double truncated_normal(const Distribution& d, double u) {
   const double a = (d.min - d.mean) / d.sd, b = (d.max - d.mean) / d.sd;
+  // The probability is kept inside the uniform draws' own range, [2^-53, 1 - 2^-53]: where an end's
+  // probability rounds to 0 or 1 (an end beyond 8 sd), the quantile then stays finite.
+  auto inside = [](double p) { return std::clamp(p, 0x1p-53, 1 - 0x1p-53); };
   double z;
   if (a >= 0) {
     // Both ends above the mean: work with upper tails, Q(a) >= Q(b), so nothing rounds near 1.
     const double qa = normal_upper_tail(a), qb = normal_upper_tail(b);
-    z = -normal_quantile(qa - u * (qa - qb));
+    z = -normal_quantile(inside(qa - u * (qa - qb)));
   } else {
     const double pa = normal_cdf(a), pb = normal_cdf(b);
-    z = normal_quantile(pa + u * (pb - pa));
+    z = normal_quantile(inside(pa + u * (pb - pa)));
   }
-  // A window so far out that its probabilities underflow gives NaN or an end: the value then is the
-  // window's nearer end, where nearly all of its mass is.
-  if (!(z == z)) z = a >= 0 ? a : b;
   return std::clamp(d.mean + d.sd * z, d.min, d.max);
 }
 

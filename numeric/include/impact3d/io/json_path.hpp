@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "impact3d/io/limits.hpp"
+
 namespace impact3d::io {
 
 struct PathStep {
@@ -23,7 +25,7 @@ struct PathStep {
 using JsonPath = std::vector<PathStep>;
 
 // Limits of a path read from input: an index (a case has at most 64 strategies) and the steps.
-inline constexpr std::size_t kPathMaxIndex = 63;
+inline constexpr std::size_t kPathMaxIndex = limits::kStrategies - 1;
 inline constexpr std::size_t kPathMaxSteps = 8;
 
 // Reads a path, with or without the leading "$" ("$.a", "$[0]", "a[0].b"); keys are letters, digits

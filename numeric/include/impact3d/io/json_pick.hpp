@@ -5,6 +5,7 @@
 // reader has to undo the writer's escapes.
 #pragma once
 
+#include <cassert>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -30,7 +31,10 @@ class JsonPick {
   bool only_picked() const { return only_picked_; }
 
   const std::vector<Span>& spans() const { return spans_; }
-  std::string_view string(const Span& s) const { return strings_[s.string]; }
+  std::string_view string(const Span& s) const {
+    assert(s.string < used_);  // only a string's span has one
+    return strings_[s.string];
+  }
   void clear() {
     spans_.clear();
     used_ = 0;

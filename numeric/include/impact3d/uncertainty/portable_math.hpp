@@ -1,5 +1,5 @@
-// The transforms that turn uniform draws into samples, written with +, -, *, / and sqrt only, which
-// IEEE 754 rounds the same way everywhere, in a file compiled without fused multiply-adds
+// The transforms that turn uniform draws into samples, written with +, -, *, / and sqrt, which IEEE 754
+// rounds the same way everywhere, and frexp, ldexp, floor and fabs, which are exact, in a file compiled without fused multiply-adds
 // (-ffp-contract=off): so a seed gives the same samples, bit for bit, on every platform and standard
 // library. std::log, std::exp and the <random> distributions differ between libraries; these do not.
 #pragma once
