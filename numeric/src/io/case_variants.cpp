@@ -8,15 +8,6 @@
 #include "impact3d/io/format_double.hpp"
 
 namespace impact3d::io {
-namespace {
-
-std::string path_text(const JsonPath& p) {
-  std::string s = "$";
-  for (const PathStep& step : p) s += step.kind == PathStep::Kind::key ? "." + step.key : fmt::format("[{}]", step.index);
-  return s;
-}
-
-}  // namespace
 
 CaseVariants::CaseVariants(const std::string& case_text, const std::vector<JsonPath>& paths, const std::vector<std::string>& where)
     : root_(parse_json_tree(case_text)), paths_(paths), base_(read_case_tree(root_)) {

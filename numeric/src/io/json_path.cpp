@@ -43,4 +43,14 @@ JsonPath parse_json_path(std::string_view text, const std::string& where) {
   return steps;
 }
 
+std::string path_text(const JsonPath& path) {
+  std::string s = "$";
+  for (const PathStep& step : path) {
+    if (step.kind == PathStep::Kind::key) s += "." + step.key;
+    else if (step.kind == PathStep::Kind::index) s += fmt::format("[{}]", step.index);
+    else s += "[]";
+  }
+  return s;
+}
+
 }  // namespace impact3d::io

@@ -1,6 +1,7 @@
 #include "impact3d/io/read_uncertainty.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -52,11 +53,17 @@ std::uint64_t count(const JsonValue& v, const std::string& at, std::uint64_t lea
   return n;
 }
 
-// A finite parameter within the case numbers' magnitudes.
+// The case numbers' largest magnitude (limits.hpp), which every parameter and value keeps to.
+const double kMaxMagnitude = std::strtod(limits::kMaxMagnitude, nullptr);
+
+bool within_magnitude(const JsonValue& x) {
+  return x.is(Type::number) && std::isfinite(x.number) && std::fabs(x.number) <= kMaxMagnitude;
+}
+
 double parameter(const JsonValue& v, const std::string& at, std::string_view key) {
   const JsonValue& m = need(v, at, key, Type::number, "a number");
-  if (!std::isfinite(m.number) || std::fabs(m.number) > 1e12)
-    fail(member(at, key), fmt::format("must be a finite number of magnitude at most 1e12 (got {})", printable(m.text)));
+  if (!within_magnitude(m))
+    fail(member(at, key), fmt::format("must be a finite number of magnitude at most {} (got {})", limits::kMaxMagnitude, printable(m.text)));
   return m.number;
 }
 
@@ -111,8 +118,7 @@ Distribution distribution(const JsonValue& v, const std::string& at) {
       for (std::size_t i = 0; i < values.size(); ++i) {
         const JsonValue& x = values.items[i];
         const std::string xat = fmt::format("{}[{}]", vat, i);
-        if (!x.is(Type::number) || !std::isfinite(x.number) || std::fabs(x.number) > 1e12)
-          fail(xat, "must be a finite number of magnitude at most 1e12");
+        if (!within_magnitude(x)) fail(xat, fmt::format("must be a finite number of magnitude at most {}", limits::kMaxMagnitude));
         d.values.push_back(x.number);
       }
       std::vector<double> weights(values.size(), 1.0);
@@ -122,8 +128,8 @@ Distribution distribution(const JsonValue& v, const std::string& at) {
         double total = 0;
         for (std::size_t i = 0; i < w->size(); ++i) {
           const JsonValue& x = w->items[i];
-          if (!x.is(Type::number) || !std::isfinite(x.number) || x.number < 0 || x.number > 1e12)
-            fail(fmt::format("{}[{}]", wat, i), "must be a number from 0 to 1e12");
+          if (!within_magnitude(x) || x.number < 0)
+            fail(fmt::format("{}[{}]", wat, i), fmt::format("must be a number from 0 to {}", limits::kMaxMagnitude));
           total += weights[i] = x.number;
         }
         if (!(total > 0)) fail(wat, "must not all be 0");

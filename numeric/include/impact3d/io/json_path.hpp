@@ -32,4 +32,7 @@ inline constexpr std::size_t kPathMaxSteps = 8;
 // and _, not starting with a digit. Throws CaseError(where, problem).
 JsonPath parse_json_path(std::string_view text, const std::string& where);
 
+// The path as messages spell it: "$.vehicles[0].mass" ("[]" for any index).
+std::string path_text(const JsonPath& path);
+
 }  // namespace impact3d::io
