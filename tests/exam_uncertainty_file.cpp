@@ -62,7 +62,9 @@ TEST_CASE("the contract's example reads into the distributions it spells") {
 TEST_CASE("bad uncertainty files are refused in one line naming the field") {
   const std::string normal = R"("distribution": "normal", "mean": 0, "sd": 1)";
   CHECK(refusal("[1]") == "$: must be an object");
-  CHECK(refusal(R"({"inputs": [], "extra": 1})") == "$: unknown key \"extra\"");
+  CHECK(refusal(R"({"inputs": [], "extra": 1})") == "$: unknown key \"extra\" (keys starting with '_' are ignored)");
+  CHECK(refusal(R"({"inputs": [], "_note": "ignored, as in a case file", "extra": 1})") ==
+        "$: unknown key \"extra\" (keys starting with '_' are ignored)");
   CHECK(refusal(R"({"samples": 0, "inputs": []})") == "$.samples: must be from 1 to 10000000 (got 0)");
   CHECK(refusal(R"({"samples": 1e5, "inputs": []})") == "$.samples: must be a whole number written in digits (got 1e5)");
   CHECK(refusal(R"({"seed": 18446744073709551616, "inputs": []})") == "$.seed: must be at most 18446744073709551615");
@@ -73,7 +75,7 @@ TEST_CASE("bad uncertainty files are refused in one line naming the field") {
         "$.inputs[0].distribution: unknown distribution \"gaussian\" (normal, truncated-normal, uniform, triangular, lognormal, discrete)");
   CHECK(refusal(one(R"({"path": "$.a", "distribution": "normal", "mean": 0, "sd": 0})")) == "$.inputs[0].sd: must be > 0 (got 0)");
   CHECK(refusal(one(R"({"path": "$.a", "distribution": "normal", "mean": 0})")) == "$.inputs[0]: missing \"sd\"");
-  CHECK(refusal(one(R"({"path": "$.a", "distribution": "normal", "mean": 0, "sd": 1, "max": 2})")) == "$.inputs[0]: unknown key \"max\"");
+  CHECK(refusal(one(R"({"path": "$.a", "distribution": "normal", "mean": 0, "sd": 1, "max": 2})")) == "$.inputs[0]: unknown key \"max\" (keys starting with '_' are ignored)");
   CHECK(refusal(one(R"({"path": "$.a", "distribution": "uniform", "min": 2, "max": 1})")) == "$.inputs[0].max: must be above \"min\"");
   CHECK(refusal(one(R"({"path": "$.a", "distribution": "triangular", "min": 0, "mode": 2, "max": 1})")) ==
         "$.inputs[0].max: must be at least \"mode\"");

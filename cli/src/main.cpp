@@ -8,10 +8,12 @@
 
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/read_case.hpp"
+#include "impact3d/io/read_uncertainty.hpp"
 #include "impact3d/io/render.hpp"
 #include "impact3d/verification/compare.hpp"
 #include "impact3d/verification/verify.hpp"
 #include "batch.hpp"
+#include "montecarlo.hpp"
 #include "plot.hpp"
 #include "user_error.hpp"
 
@@ -119,6 +121,26 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(impact3d::io::precision_names()));
   batch_cmd->add_option("--engine", batch_engine, "generated (default) or direct, as solve's")
       ->check(CLI::IsMember({"generated", "direct"}));
+  auto* mc_cmd = app.add_subcommand("montecarlo", "solve a case for every sample of its uncertain inputs (contract: many-cases.md)");
+  impact3d::cli::MonteCarloCliOptions mopt;
+  std::string mc_engine = "generated";
+  mc_cmd->add_option("case", mopt.case_path, "case file (JSON)")->required();
+  mc_cmd->add_option("--uncertainty", mopt.uncertainty_path, "uncertainty file: the inputs' distributions (README, \"Monte Carlo\")")
+      ->required();
+  mc_cmd->add_option("--format", mopt.format, "text summary (default) or contract JSON")->check(CLI::IsMember({"text", "json"}));
+  mc_cmd->add_option("--samples", mopt.samples, "replace the file's number of samples")
+      ->check(CLI::Range(std::uint64_t{1}, impact3d::io::kMaxSamples));
+  mc_cmd->add_option("--seed", mopt.seed, "replace the file's seed");
+  mc_cmd->add_option("--jobs", mopt.jobs, "threads (default: every core); the output does not depend on it")
+      ->check(CLI::Range(1, 1024));
+  mc_cmd->add_option("--samples-out", mopt.samples_out, "also write every sample's inputs and outputs to this CSV file");
+  mc_cmd->add_option("--strategy", mopt.strategies, "replace the case's strategies (as solve's --strategy)");
+  std::vector<std::string> mc_precisions = impact3d::io::precision_names();
+  std::erase(mc_precisions, "exact");
+  mc_cmd->add_option("--precision", mopt.precision, "arithmetic of each sample, as solve's (not exact)")
+      ->check(CLI::IsMember(mc_precisions));
+  mc_cmd->add_option("--engine", mc_engine, "generated (default) or direct, as solve's")
+      ->check(CLI::IsMember({"generated", "direct"}));
   auto* compare_cmd = app.add_subcommand("compare", "compare another tool's results with reference results");
   std::string reference, other;
   impact3d::verification::CompareOptions copt;
@@ -172,6 +194,11 @@ int main(int argc, char** argv) {
     return guarded("", [&] {
       bopt.engine = batch_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
       return impact3d::cli::batch(bopt);
+    });
+  if (mc_cmd->parsed())
+    return guarded("", [&] {
+      mopt.engine = mc_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
+      return impact3d::cli::montecarlo(mopt);
     });
   if (verify_cmd->parsed()) return guarded("", [&] { return impact3d::verification::verify(vopt); });
   if (compare_cmd->parsed()) return guarded("", [&] { return impact3d::verification::compare(reference, other, copt); });

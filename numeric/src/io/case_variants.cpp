@@ -42,6 +42,12 @@ void CaseVariants::resolve(const std::vector<std::string>* where) {
   }
 }
 
+std::vector<double> CaseVariants::values() const {
+  std::vector<double> out;
+  for (const JsonValue* slot : slots_) out.push_back(slot->number);
+  return out;
+}
+
 CaseSpec CaseVariants::with(const double* values) {
   for (std::size_t i = 0; i < slots_.size(); ++i) {
     if (!std::isfinite(values[i])) throw CaseError(path_text(paths_[i]), "the sampled value is not finite");

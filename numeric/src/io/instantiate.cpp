@@ -14,6 +14,14 @@ std::string render(const CaseSpec& spec, const RenderOptions& o) {
   const Scene<Scalar> scene = to_scene<Scalar>(spec);
   const Analysis<Scalar> a = analyze(scene, to_strategies<Scalar>(spec), o.engine);
   const std::string precision(precision_name<Scalar>);
+  if (o.warning_codes) {
+    o.warning_codes->clear();
+    for (const auto& sol : a.solutions) {
+      WarningSet codes = 0;
+      for (const auto& w : sol.warnings) codes |= warning_bit(w.code);
+      o.warning_codes->push_back(codes);
+    }
+  }
   if (o.format == "json" || o.format == "jsonl") return result_json(spec, a, precision, 0, false, {}, o.format == "jsonl", o.pick);
   const int digits = o.digits > 0 ? o.digits : std::numeric_limits<Scalar>::digits10;
   return report_text(spec, a, precision, digits);

@@ -24,9 +24,10 @@ std::string member(const std::string& at, std::string_view key) { return at + ".
 
 void only_keys(const JsonValue& v, const std::string& at, std::initializer_list<std::string_view> allowed) {
   for (const std::string& k : v.keys) {
+    if (!k.empty() && k[0] == '_') continue;  // comments and private extensions, as in a case file
     bool known = false;
     for (std::string_view a : allowed) known = known || k == a;
-    if (!known) fail(at, fmt::format("unknown key {}", io::quoted(k)));
+    if (!known) fail(at, fmt::format("unknown key {} (keys starting with '_' are ignored)", io::quoted(k)));
   }
 }
 

@@ -26,6 +26,8 @@ class CaseVariants {
   CaseSpec with(const double* values);
 
   const CaseSpec& base() const { return base_; }
+  // The case's own numbers at the paths, as read (each literal correctly rounded).
+  std::vector<double> values() const;
 
  private:
   JsonValue root_;

@@ -17,6 +17,7 @@ struct RenderOptions {
   int digits = 0;               // text report; 0 = the precision's digits10
   Engine engine = Engine::generated;
   JsonPick* pick = nullptr;  // json, jsonl: where the values it names are written (json_pick.hpp)
+  std::vector<WarningSet>* warning_codes = nullptr;  // when given: each result's warnings as codes
 };
 
 // Throws CaseError for inputs that fail the arithmetic checks, SolveError for no solution.

@@ -123,7 +123,13 @@ inline std::string parameter_text(const StrategySpec& s, const Parameter& p) {
 inline std::string strategy_label(const StrategySpec& s) {
   const KindRow row = strategy_kind(s.kind);
   std::string label(row.name);
-  for (const auto& p : row.parameters) label += " " + std::string(p.key) + "=" + parameter_text(s, p);
+  for (const auto& p : row.parameters) {
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, falsely) on a chain of operator+ here.
+    label += ' ';
+    label += p.key;
+    label += '=';
+    label += parameter_text(s, p);
+  }
   return label;
 }
 

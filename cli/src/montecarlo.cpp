@@ -1,0 +1,99 @@
+#include "montecarlo.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <cerrno>
+
+#include <fmt/format.h>
+
+#include "impact3d/io/limits.hpp"
+#include "impact3d/io/montecarlo.hpp"
+#include "impact3d/io/read_case.hpp"
+#include "impact3d/io/read_uncertainty.hpp"
+#include "impact3d/io/strategy_option.hpp"
+#include "user_error.hpp"
+
+namespace impact3d::cli {
+
+namespace {
+
+// A problem of one input file, named by it ("U.json: $.inputs[2].path: ...").
+io::CaseError in_file(const std::string& file, const io::CaseError& e) {
+  if (e.path.rfind("--", 0) == 0 || e.path.rfind(file + ":", 0) == 0) return e;
+  return io::CaseError(file + ": " + e.path, e.what());
+}
+
+}  // namespace
+
+int montecarlo(const MonteCarloCliOptions& o) {
+  io::MonteCarloOptions mo;
+  mo.precision = o.precision;
+  mo.engine = o.engine;
+  mo.jobs = o.jobs;
+  if (o.strategies.size() > io::limits::kStrategies)
+    throw io::CaseError("--strategy", fmt::format("more than {} strategies", io::limits::kStrategies));
+  for (std::size_t i = 0; i < o.strategies.size(); ++i)
+    mo.strategies.push_back(io::read_strategy_option(o.strategies[i], static_cast<int>(i)));
+  // The case on its own first, so that its problems name it; then the uncertainty file's.
+  std::string case_text;
+  try {
+    case_text = io::read_text_file(o.case_path);
+    io::read_case(case_text);
+  } catch (const io::CaseError& e) {
+    throw in_file(o.case_path, e);
+  }
+  io::UncertaintySpec u;
+  try {
+    u = io::read_uncertainty(io::read_text_file(o.uncertainty_path));
+  } catch (const io::CaseError& e) {
+    throw in_file(o.uncertainty_path, e);
+  }
+  if (o.samples) u.samples = *o.samples;
+  if (o.seed) u.seed = *o.seed;
+  // The samples' file is opened before the run, so that a run is not lost to a path that cannot be written.
+  std::FILE* samples_file = nullptr;
+  if (!o.samples_out.empty()) {
+    mo.keep_samples = true;
+    samples_file = std::fopen(o.samples_out.c_str(), "wb");
+    if (!samples_file) throw UserError(fmt::format("--samples-out: cannot write {} ({})", o.samples_out, std::strerror(errno)));
+  }
+  struct Closer {
+    std::FILE* f;
+    ~Closer() {
+      if (f) std::fclose(f);
+    }
+  } closer{samples_file};
+  const bool shown = ::isatty(STDERR_FILENO) == 1;
+  const auto start = std::chrono::steady_clock::now();
+  if (shown)
+    mo.progress = [&](std::uint64_t done) {
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double rate = seconds > 0 ? static_cast<double>(done) / seconds : 0;
+      const double left = rate > 0 ? static_cast<double>(u.samples - done) / rate : 0;
+      std::fprintf(stderr, "\rimpact3d: montecarlo: %llu of %llu samples, %.0f/s, %.0f s left   ",
+                   static_cast<unsigned long long>(done), static_cast<unsigned long long>(u.samples), rate, left);
+    };
+  io::MonteCarloRun run;
+  try {
+    run = io::montecarlo(case_text, u, mo);
+  } catch (const io::CaseError& e) {
+    if (shown) std::fputs("\r\033[K", stderr);
+    if (o.samples && e.path == "$.samples") throw io::CaseError("--samples", e.what());
+    throw in_file(o.uncertainty_path, e);
+  }
+  if (shown) std::fputs("\r\033[K", stderr);
+  if (samples_file) {
+    bool ok = true;
+    io::samples_csv(run, [&](std::string_view piece) { ok = ok && std::fwrite(piece.data(), 1, piece.size(), samples_file) == piece.size(); });
+    closer.f = nullptr;
+    if (std::fclose(samples_file) != 0 || !ok) throw UserError(fmt::format("--samples-out: cannot write {}", o.samples_out));
+  }
+  const std::string out = o.format == "json" ? io::montecarlo_json(run) : io::montecarlo_text(run);
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  return 0;
+}
+
+}  // namespace impact3d::cli

@@ -1,0 +1,109 @@
+// `impact3d montecarlo` as a library (many-cases.md, "montecarlo"): a case solved for every sample of
+// its uncertain inputs, and each result's outputs summarized. A sample is the case with the sampled
+// numbers written at their paths and solved exactly as `solve` would solve that case; its outputs are
+// the numbers of the result document at the paths of monte_carlo_outputs(), taken as the document is
+// written (json_pick.hpp). A sample that the case's rules refuse, that does not approach, or whose
+// strategy has no solution is counted by its reason, never dropped.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/read_uncertainty.hpp"
+#include "impact3d/numeric/problem.hpp"
+#include "impact3d/numeric/strategy.hpp"
+#include "impact3d/uncertainty/statistics.hpp"
+
+namespace impact3d::io {
+
+// An output of each result: its path inside one result ("vehicles[0].delta_v_magnitude"), and whether
+// it is an angle in degrees, wrapping at +-180 or, `from_zero`, at 0 and 360.
+struct OutputPath {
+  std::string text;
+  JsonPath path;
+  bool angle = false, from_zero = false;
+};
+
+// Every number of a result that a Monte Carlo run summarizes: the impulse, the relative velocity, the
+// ratios and limits used, sliding and swerve, each vehicle's post-impact velocities, ΔV and PDOF, and
+// the energy. An output a strategy does not write (brach has no "gir") is left out of its summary.
+const std::vector<OutputPath>& monte_carlo_outputs();
+
+// The warnings of a result, counted by code: their spelling in the output.
+inline constexpr std::array<std::string_view, 8> kWarningNames{"tensile normal impulse", "energy gained", "plane undefined",
+                                                               "negative ratio", "non-physical limit", "not finite",
+                                                               "rounding", "undecided"};
+inline constexpr std::array<std::string_view, 4> kRegimeNames{"full", "sliding", "capped", "as-given"};
+
+struct MonteCarloOptions {
+  std::string precision = "double";  // a name of precision_names() other than "exact"
+  Engine engine = Engine::generated;
+  unsigned jobs = 0;                       // threads; 0: every core
+  std::vector<StrategySpec> strategies;    // replace the case's, when not empty
+  bool keep_samples = false;               // keep every sample's inputs and outputs (samples_csv)
+  // Called on the calling thread about ten times a second with the samples done, and once at the end.
+  std::function<void(std::uint64_t done)> progress;
+};
+
+struct OutputSummary {
+  const OutputPath* output;
+  std::uint64_t undefined = 0;  // solved samples whose document has null here (a PDOF of no ΔV)
+  uncertainty::Summary summary;
+};
+
+struct Rejections {
+  std::string reason;        // "not approaching", "no solution", "invalid $.vehicles[0].mass"
+  std::uint64_t count = 0;
+  std::uint64_t first = 0;   // the first sample (0-based) rejected so
+  std::string message;       // and its one-line problem, as `solve` prints it
+};
+
+struct StrategySummary {
+  StrategySpec strategy;  // as the case (or the options) give it: its echo is the document's
+  std::uint64_t solved = 0;
+  std::vector<Rejections> rejected;  // by reason, in the order of the reasons' text
+  std::array<std::uint64_t, kRegimeNames.size()> regimes{};
+  std::array<std::uint64_t, kWarningNames.size()> warnings{};  // solved samples with that warning
+  std::vector<OutputSummary> outputs;  // in the order of monte_carlo_outputs(), those ever written
+};
+
+struct MonteCarloRun {
+  std::uint64_t samples = 0, seed = 0;
+  std::string precision;
+  std::vector<std::string> inputs;  // the uncertain inputs' paths, as written
+  std::vector<StrategySummary> results;
+  // With keep_samples: sample i's inputs at inputs_of[i * inputs.size()]; output c of result k at
+  // outputs_of[(k * monte_carlo_outputs().size() + c) * samples + i] (NaN where the sample was rejected
+  // or the document has null); its regime (kRegimeNames, or -1: not solved) and its rejection (0: none,
+  // r + 1: reasons[r]).
+  std::vector<double> inputs_of;
+  std::vector<double> outputs_of;
+  std::vector<std::vector<std::int8_t>> regime_of;
+  std::vector<std::vector<std::uint16_t>> reason_of;
+  std::vector<std::string> reasons;
+};
+
+// The largest number of values a run keeps (samples x results x outputs, 8 bytes each): percentiles
+// need every value (README, "Limits").
+inline constexpr std::uint64_t kMaxKeptValues = 300'000'000;
+
+// Throws CaseError: for the uncertainty file's problems at its JSON path ("$.inputs[2].path: ...",
+// "$.inputs[0].distribution: ..."), for the case's at the case's, and for a run that would keep more
+// than kMaxKeptValues at "$.samples".
+MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u, const MonteCarloOptions& o);
+
+// The contract's JSON document (many-cases.md), and the text report.
+std::string montecarlo_json(const MonteCarloRun& run);
+std::string montecarlo_text(const MonteCarloRun& run);
+
+// Every sample as CSV (a run with keep_samples): a header, then one row per sample in sample order:
+// `sample`, each input, then for each result `results[k].regime`, `results[k].rejected` and its
+// outputs. `write` takes the text in pieces.
+void samples_csv(const MonteCarloRun& run, const std::function<void(std::string_view)>& write);
+
+}  // namespace impact3d::io

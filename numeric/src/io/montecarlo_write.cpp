@@ -1,0 +1,182 @@
+// A Monte Carlo run written out: the contract's JSON, the text report, every sample as CSV. Statistics
+// are printed as the shortest decimal that reads back as the same double (fmt's), the same on every
+// platform; a sample's numbers in the CSV as the result document writes them (17 digits).
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/format_double.hpp"
+#include "impact3d/io/json_writer.hpp"
+#include "impact3d/io/result_json.hpp"
+#include "impact3d/io/montecarlo.hpp"
+
+namespace impact3d::io {
+
+namespace {
+
+void put(JsonWriter& w, double x) {
+  if (std::isfinite(x)) w.raw(fmt::format("{}", x));
+  else w.null();
+}
+
+double fraction(std::uint64_t count, std::uint64_t of) { return of ? static_cast<double>(count) / static_cast<double>(of) : 0.0; }
+
+void write_summary(JsonWriter& w, const OutputSummary& o) {
+  const auto& s = o.summary;
+  w.begin_object();
+  w.key("count").raw(std::to_string(s.count));
+  if (o.undefined) w.key("undefined").raw(std::to_string(o.undefined));
+  if (o.output->angle) w.key("angle").string(o.output->from_zero ? "[0, 360)" : "(-180, 180]");
+  if (s.count) {
+    put(w.key("mean"), s.mean);
+    put(w.key("sd"), s.sd);
+    w.key("percentiles").begin_object();
+    for (std::size_t p = 0; p < uncertainty::kPercentiles.size(); ++p) put(w.key(uncertainty::kPercentileKeys[p]), s.percentile[p]);
+    w.end_object();
+    put(w.key("mean_se"), s.mean_se);
+    w.key("percentile_se").begin_object();
+    for (std::size_t p = 0; p < uncertainty::kPercentiles.size(); ++p)
+      put(w.key(uncertainty::kPercentileKeys[p]), s.percentile_se[p]);
+    w.end_object();
+    put(w.key("min"), s.min);
+    put(w.key("max"), s.max);
+  }
+  w.end_object();
+}
+
+// A CSV cell: quoted when it must be.
+void cell(std::string& out, std::string_view s) {
+  if (s.find_first_of(",\"\r\n") == std::string_view::npos) {
+    out += s;
+    return;
+  }
+  out += '"';
+  for (char c : s) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  out += '"';
+}
+
+}  // namespace
+
+std::string montecarlo_json(const MonteCarloRun& run) {
+  JsonWriter w;
+  w.begin_object();
+  w.key("samples").raw(std::to_string(run.samples));
+  w.key("seed").raw(std::to_string(run.seed));
+  w.key("precision").string(run.precision);
+  w.key("inputs").begin_array();
+  for (const auto& in : run.inputs) w.string(in);
+  w.end_array();
+  w.key("results").begin_array();
+  for (const auto& r : run.results) {
+    w.begin_object();
+    w.key("strategy");
+    write_strategy_echo(w, r.strategy);
+    w.key("solved").raw(std::to_string(r.solved));
+    w.key("rejected").begin_object();
+    for (const auto& rej : r.rejected) w.key(rej.reason).raw(std::to_string(rej.count));
+    w.end_object();
+    w.key("rejections").begin_array();
+    for (const auto& rej : r.rejected) {
+      w.begin_object();
+      w.key("reason").string(rej.reason);
+      w.key("count").raw(std::to_string(rej.count));
+      w.key("first_sample").raw(std::to_string(rej.first));
+      w.key("message").string(rej.message);
+      w.end_object();
+    }
+    w.end_array();
+    w.key("regime_probability").begin_object();
+    for (std::size_t k = 0; k < kRegimeNames.size(); ++k)
+      if (r.regimes[k]) put(w.key(kRegimeNames[k]), fraction(r.regimes[k], r.solved));
+    w.end_object();
+    w.key("warning_probability").begin_object();
+    for (std::size_t k = 0; k < kWarningNames.size(); ++k) put(w.key(kWarningNames[k]), fraction(r.warnings[k], r.solved));
+    w.end_object();
+    w.key("outputs").begin_object();
+    for (const auto& o : r.outputs) {
+      w.key(o.output->text);
+      write_summary(w, o);
+    }
+    w.end_object();
+    w.end_object();
+  }
+  w.end_array();
+  w.end_object();
+  return std::move(w).str();
+}
+
+std::string montecarlo_text(const MonteCarloRun& run) {
+  std::string out = fmt::format("Monte Carlo: {} samples, seed {}, {} precision\n", run.samples, run.seed, run.precision);
+  out += "uncertain inputs:\n";
+  for (const auto& in : run.inputs) out += "  " + printable(in) + "\n";
+  for (const auto& r : run.results) {
+    out += fmt::format("\n{}\n", printable(strategy_label(r.strategy)));
+    out += fmt::format("  solved {} of {}", r.solved, run.samples);
+    for (const auto& rej : r.rejected) out += fmt::format("; rejected {}: {}", printable(rej.reason), rej.count);
+    out += "\n";
+    for (const auto& rej : r.rejected)
+      out += fmt::format("    first {} (sample {}): {}\n", printable(rej.reason), rej.first, printable(rej.message));
+    out += "  regime:";
+    for (std::size_t k = 0; k < kRegimeNames.size(); ++k)
+      if (r.regimes[k]) out += fmt::format(" {} {:.4g} %", kRegimeNames[k], 100 * fraction(r.regimes[k], r.solved));
+    out += "\n  warnings:";
+    bool any = false;
+    for (std::size_t k = 0; k < kWarningNames.size(); ++k)
+      if (r.warnings[k]) out += fmt::format(" {} {:.4g} %;", kWarningNames[k], 100 * fraction(r.warnings[k], r.solved)), any = true;
+    out += any ? "\n" : " none\n";
+    // 79 columns: the path, then mean, sd and the 95 % interval; the JSON has every percentile.
+    out += fmt::format("  {:<35} {:>9} {:>9} {:>10} {:>10}\n", "output", "mean", "sd", "2.5 %", "97.5 %");
+    for (const auto& o : r.outputs) {
+      const auto& s = o.summary;
+      if (!s.count) {
+        out += fmt::format("  {:<35} undefined in every sample\n", o.output->text);
+        continue;
+      }
+      out += fmt::format("  {:<35} {:>9.4g} {:>9.3g} {:>10.4g} {:>10.4g}", o.output->text, s.mean, s.sd, s.percentile[1],
+                         s.percentile[7]);
+      if (o.undefined) out += fmt::format("  ({} undefined)", o.undefined);
+      out += "\n";
+    }
+  }
+  return out;
+}
+
+void samples_csv(const MonteCarloRun& run, const std::function<void(std::string_view)>& write) {
+  const std::size_t outputs = monte_carlo_outputs().size(), inputs = run.inputs.size();
+  std::string line = "sample";
+  for (const auto& in : run.inputs) line += ',', cell(line, in);
+  for (std::size_t k = 0; k < run.results.size(); ++k) {
+    line += fmt::format(",results[{}].regime,results[{}].rejected", k, k);
+    for (const auto& o : run.results[k].outputs) line += fmt::format(",results[{}].{}", k, o.output->text);
+  }
+  line += '\n';
+  write(line);
+  char buf[32];
+  auto number = [&](double x) {
+    if (std::isfinite(x)) line.append(buf, format_g17(buf, x));
+  };
+  for (std::uint64_t i = 0; i < run.samples; ++i) {
+    line = std::to_string(i);
+    for (std::size_t c = 0; c < inputs; ++c) line += ',', number(run.inputs_of[i * inputs + c]);
+    for (std::size_t k = 0; k < run.results.size(); ++k) {
+      const int regime = run.regime_of[k][i];
+      line += ',';
+      if (regime >= 0) line += kRegimeNames[static_cast<std::size_t>(regime)];
+      line += ',';
+      if (const std::uint16_t reason = run.reason_of[k][i]) cell(line, run.reasons[reason - 1u]);
+      for (const auto& o : run.results[k].outputs) {
+        const auto c = static_cast<std::size_t>(o.output - monte_carlo_outputs().data());
+        line += ',';
+        number(run.outputs_of[(k * outputs + c) * run.samples + i]);
+      }
+    }
+    line += '\n';
+    write(line);
+  }
+}
+
+}  // namespace impact3d::io

@@ -1,0 +1,180 @@
+// `impact3d montecarlo` (../shared/spec/many-cases.md) as a user runs it: on the bundled Figure 8 case
+// and its uncertainty file, the JSON has the contract's keys and summarizes at least every number the
+// contract names, checked against the keys of `solve`'s own document for the case; the same seed gives
+// the same bytes at --jobs 1 and 2; --samples-out writes a row per sample; bad uncertainty files and
+// options get one line naming the field, exit 1 (2 for usage), and nothing on standard output.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "cli_process.hpp"
+
+using namespace impact3d::test;
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const std::string kCase = IMPACT3D_EXAMPLES_DIR "/fig8_side_impact.json";
+const std::string kUncertainty = IMPACT3D_EXAMPLES_DIR "/uncertainty/fig8_side_impact.json";
+
+fs::path scratch() {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-mc-{}", ::getpid());
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Every number's path inside one result of a solve document, under the groups the contract names.
+void numbers(const json& v, const std::string& path, std::set<std::string>& out) {
+  if (v.is_number()) out.insert(path);
+  else if (v.is_object())
+    for (auto it = v.begin(); it != v.end(); ++it) numbers(it.value(), path.empty() ? it.key() : path + "." + it.key(), out);
+  else if (v.is_array())
+    for (std::size_t i = 0; i < v.size(); ++i) numbers(v[i], fmt::format("{}[{}]", path, i), out);
+}
+
+}  // namespace
+
+TEST_CASE("the Figure 8 Monte Carlo: the contract's JSON, the same bytes at any --jobs") {
+  const Run one = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "3000",
+                                             "--format", "json", "--jobs", "1"});
+  REQUIRE(one.status == 0);
+  CHECK(one.err.empty());  // no progress display when standard error is not a terminal
+  const Run two = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "3000",
+                                             "--format", "json", "--jobs", "2"});
+  REQUIRE(two.status == 0);
+  CHECK(two.out == one.out);
+  const json doc = json::parse(one.out);
+  CHECK(doc["samples"] == 3000);
+  CHECK(doc["seed"] == 42);
+  const Run solved = run_program(IMPACT3D_CLI, {"solve", kCase, "--format", "json"});
+  REQUIRE(solved.status == 0);
+  const json reference = json::parse(solved.out);
+  REQUIRE(doc["results"].size() == reference["results"].size());
+  std::size_t checked = 0;
+  for (std::size_t k = 0; k < doc["results"].size(); ++k) {
+    const json& r = doc["results"][k];
+    INFO("result " << k);
+    CHECK(r["strategy"] == reference["results"][k]["strategy"]);
+    std::uint64_t rejected = 0;
+    for (const auto& [reason, count] : r["rejected"].items()) rejected += count.get<std::uint64_t>();
+    CHECK(r["solved"].get<std::uint64_t>() + rejected == 3000);
+    double regimes = 0;
+    for (const auto& [name, p] : r["regime_probability"].items()) regimes += p.get<double>();
+    CHECK(std::fabs(regimes - 1) <= 1e-15);  // every solved sample has a regime
+    CHECK(r["warning_probability"].contains("tensile normal impulse"));
+    // Every number the contract names is summarized, with every percentile.
+    std::set<std::string> wanted;
+    const json& result = reference["results"][k];
+    for (const char* group : {"impulse", "sliding", "energy"}) numbers(result[group], group, wanted);
+    numbers(result["relative_velocity"]["after"], "relative_velocity.after", wanted);
+    for (int v = 0; v < 2; ++v)
+      for (const char* key : {"velocity", "angular_velocity", "delta_v", "delta_v_magnitude", "pdof_deg"})
+        numbers(result["vehicles"][v][key], fmt::format("vehicles[{}].{}", v, key), wanted);
+    REQUIRE(wanted.size() >= 30);
+    for (const auto& path : wanted) {
+      INFO(path);
+      REQUIRE(r["outputs"].contains(path));
+      const json& o = r["outputs"][path];
+      for (const char* p : {"1", "2.5", "5", "25", "50", "75", "95", "97.5", "99"}) {
+        CHECK(o["percentiles"].contains(p));
+        CHECK(o["percentile_se"].contains(p));
+      }
+      CHECK(o.contains("mean"));
+      CHECK(o.contains("sd"));
+      ++checked;
+    }
+  }
+  CHECK(checked >= 120);
+  CHECK(doc["results"][0]["outputs"]["vehicles[1].pdof_deg"]["angle"] == "[0, 360)");
+}
+
+TEST_CASE("every sample is written by --samples-out, and the text report fits 80 columns") {
+  const fs::path csv = scratch() / "samples.csv";
+  const Run r = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "500",
+                                           "--samples-out", csv.string(), "--strategy", "pc-crash:mu=0.4"});
+  REQUIRE(r.status == 0);
+  CHECK(r.out.rfind("Monte Carlo: 500 samples, seed 42", 0) == 0);
+  std::size_t lines = 0, widest = 0;
+  for (std::size_t at = 0, end; at < r.out.size(); at = end + 1) {
+    end = r.out.find('\n', at);
+    widest = std::max(widest, end - at);
+    ++lines;
+  }
+  CHECK(lines > 50);
+  CHECK(widest <= 80);
+  std::ifstream in(csv);
+  std::string line;
+  std::size_t rows = 0;
+  std::getline(in, line);
+  CHECK(line.rfind("sample,$.vehicles[0].velocity[0],$.vehicles[1].velocity[1],", 0) == 0);
+  CHECK(line.find(",results[0].regime,results[0].rejected,") != std::string::npos);
+  const auto columns = std::count(line.begin(), line.end(), ',');
+  while (std::getline(in, line)) {
+    CHECK(std::count(line.begin(), line.end(), ',') == columns);
+    CHECK(line.rfind(std::to_string(rows) + ",", 0) == 0);
+    ++rows;
+  }
+  CHECK(rows == 500);
+}
+
+TEST_CASE("bad uncertainty files and options: one line naming the field, nothing on stdout") {
+  const fs::path dir = scratch();
+  struct Bad {
+    std::string file, message;
+  };
+  const std::vector<Bad> bad = {
+      {R"({"inputs": [{"path": "$.vehicles[3].mass", "distribution": "uniform", "min": 1, "max": 2}]})",
+       "$.inputs[0].path: \"$.vehicles[3].mass\" is no field of the case"},
+      {R"({"inputs": [{"path": "$.restitution", "distribution": "normal", "mean": 0.1, "sd": -1}]})", "$.inputs[0].sd"},
+      {R"({"inputs": [{"path": "$.restitution", "distribution": "uniform", "min": 0.2, "max": 0.1}]})", "$.inputs[0]"},
+      {R"({"inputs": [{"path": "$.vehicles[0].mass", "distribution": "normal", "mean": 1500, "sd": 60}]})",
+       "$.inputs[0].distribution: a normal is not bounded below"},
+      {R"({"inputs": [{"path": "$.restitution", "distribution": "uniform", "min": 0.1, "max": 0.2},
+                      {"path": "$.vehicles[0].mass", "distribution": "uniform", "min": 1500, "max": 1600},
+                      {"path": "$.vehicles[1].mass", "distribution": "uniform", "min": 2500, "max": 2600}],
+          "correlations": [{"paths": ["$.restitution", "$.vehicles[0].mass"], "rho": 0.9},
+                           {"paths": ["$.restitution", "$.vehicles[1].mass"], "rho": 0.9},
+                           {"paths": ["$.vehicles[0].mass", "$.vehicles[1].mass"], "rho": -0.9}]})",
+       "$.correlations"},
+      {"{\"inputs\": [", "$"},
+  };
+  int checked = 0;
+  for (std::size_t i = 0; i < bad.size(); ++i) {
+    const fs::path u = dir / fmt::format("bad{}.json", i);
+    std::ofstream(u) << bad[i].file;
+    const Run r = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", u.string()});
+    INFO(bad[i].file);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_THAT(r.err, Catch::StartsWith("impact3d: error: " + u.string() + ": " + bad[i].message));
+    ++checked;
+  }
+  CHECK(checked == 6);
+  // A bad case names the case file; options out of range are usage errors.
+  const fs::path bad_case = dir / "case.json";
+  std::ofstream(bad_case) << "{}";
+  const Run c = run_program(IMPACT3D_CLI, {"montecarlo", bad_case.string(), "--uncertainty", kUncertainty});
+  CHECK(c.status == 1);
+  CHECK(c.out.empty());
+  CHECK_THAT(c.err, Catch::StartsWith("impact3d: error: " + bad_case.string() + ": $"));
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"--samples", "0"}, {"--samples", "10000001"}, {"--precision", "exact"}, {"--jobs", "0"}}) {
+    std::vector<std::string> all = {"montecarlo", kCase, "--uncertainty", kUncertainty};
+    all.insert(all.end(), args.begin(), args.end());
+    const Run u = run_program(IMPACT3D_CLI, all);
+    INFO(args[0] << " " << args[1]);
+    CHECK(u.status == 2);
+    CHECK(u.out.empty());
+  }
+  const Run unwritable = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "10",
+                                                    "--samples-out", (dir / "no" / "such" / "dir.csv").string()});
+  CHECK(unwritable.status == 1);
+  CHECK(unwritable.out.empty());
+  CHECK_THAT(unwritable.err, Catch::StartsWith("impact3d: error: --samples-out: cannot write"));
+  fs::remove_all(dir);
+}
