@@ -95,7 +95,7 @@ TEST_CASE("the Figure 8 Monte Carlo: the contract's JSON, the same bytes at any 
 TEST_CASE("every sample is written by --samples-out, and the text report fits 80 columns") {
   const fs::path csv = scratch() / "samples.csv";
   const Run r = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "500",
-                                           "--samples-out", csv.string(), "--strategy", "pc-crash:mu=0.4"});
+                                           "--samples-out", csv.string()});
   REQUIRE(r.status == 0);
   CHECK(r.out.rfind("Monte Carlo: 500 samples, seed 42", 0) == 0);
   std::size_t lines = 0, widest = 0;
@@ -176,5 +176,52 @@ TEST_CASE("bad uncertainty files and options: one line naming the field, nothing
   CHECK(unwritable.status == 1);
   CHECK(unwritable.out.empty());
   CHECK_THAT(unwritable.err, Catch::StartsWith("impact3d: error: --samples-out: cannot write"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the figures draw the run's own numbers: histogram counts and percentile marks") {
+  const fs::path dir = scratch() / "figures";
+  const fs::path u = scratch() / "two_inputs.json";
+  std::ofstream(u) << R"({"seed": 3, "inputs": [
+      {"path": "$.vehicles[1].velocity[1]", "distribution": "normal", "mean": 11.176, "sd": 0.9},
+      {"path": "$.restitution", "distribution": "uniform", "min": 0.05, "max": 0.2}]})";
+  const Run r = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", u.string(), "--samples", "1000", "--format", "json",
+                                           "--strategy", "pc-crash:mu=0.4", "--plot", dir.string()});
+  REQUIRE(r.status == 0);
+  const json doc = json::parse(r.out);
+  const json& result = doc["results"][0];
+  int checked = 0;
+  for (const auto& [slug, path] : std::vector<std::pair<std::string, std::string>>{
+           {"vehicles_0_delta_v_magnitude", "vehicles[0].delta_v_magnitude"},
+           {"vehicles_1_delta_v_magnitude", "vehicles[1].delta_v_magnitude"},
+           {"energy_loss", "energy.loss"}}) {
+    INFO(path);
+    const std::string name = "mc0_hist_" + slug;
+    REQUIRE(fs::exists(dir / (name + ".svg")));
+    // The bars hold every solved sample once.
+    std::ifstream dat(dir / (name + ".dat"));
+    std::string line;
+    std::uint64_t total = 0;
+    while (std::getline(dat, line)) total += std::stoull(line.substr(line.find(',') + 1));
+    CHECK(total == result["outputs"][path]["count"].get<std::uint64_t>());
+    // The marks stand at the summary's 2.5, 50 and 97.5 percentiles (17 digits: the same doubles).
+    const std::string script = slurp(dir / (name + ".gp"));
+    std::vector<double> marks;
+    for (std::size_t at = 0; (at = script.find("set arrow from ", at)) != std::string::npos; at += 15)
+      marks.push_back(std::stod(script.substr(at + 15)));
+    REQUIRE(marks.size() == 3);
+    CHECK(marks[0] == result["outputs"][path]["percentiles"]["2.5"].get<double>());
+    CHECK(marks[1] == result["outputs"][path]["percentiles"]["50"].get<double>());
+    CHECK(marks[2] == result["outputs"][path]["percentiles"]["97.5"].get<double>());
+    ++checked;
+  }
+  CHECK(checked == 3);
+  CHECK(fs::exists(dir / "mc0_scatter.svg"));
+  for (int j = 0; j < 2; ++j) CHECK(fs::exists(dir / fmt::format("mc0_dv_vs_input{}.svg", j)));
+  const Run bad = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", kUncertainty, "--plot", dir.string(), "--scatter",
+                                             "energy.loss", "vehicles[2].pdof_deg"});
+  CHECK(bad.status == 1);
+  CHECK(bad.out.empty());
+  CHECK_THAT(bad.err, Catch::StartsWith("impact3d: error: --scatter: \"vehicles[2].pdof_deg\" is not an output"));
   fs::remove_all(dir);
 }

@@ -4,7 +4,9 @@
 // spread sample, where the quantile function's slope is known exactly.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -98,4 +100,41 @@ TEST_CASE("a percentile's standard error is the quantile slope times sqrt(p (1 -
   CHECK(std::fabs(s.mean - 0.5) <= 4 * kEps);
   const double nn = static_cast<double>(n);
   CHECK(near(s.sd, std::sqrt(nn * (nn + 1) / (12 * (nn - 1) * (nn - 1))), 64));
+}
+
+TEST_CASE("the percentiles read from selected order statistics are those of the sorted values") {
+  // Seeded values with many ties (rounded to a coarse grid) and without, at sizes around the edges of
+  // the positions read: the selection must leave each read position holding its order statistic.
+  std::uint64_t state = 12345;
+  auto next = [&] {  // splitmix64
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1p-53;
+  };
+  int checked = 0;
+  for (std::size_t n : {1u, 2u, 3u, 7u, 100u, 101u, 4999u, 20000u})
+    for (bool ties : {false, true}) {
+      std::vector<double> x(n);
+      for (double& v : x) v = ties ? std::floor(next() * 10) : next() * 100 - 50;
+      std::vector<double> sorted = x;
+      std::sort(sorted.begin(), sorted.end());
+      std::vector<double> work = x;
+      const Summary s = summarize(work);
+      INFO("n " << n << (ties ? ", ties" : ""));
+      CHECK(s.min == sorted.front());
+      CHECK(s.max == sorted.back());
+      for (std::size_t k = 0; k < kPercentiles.size(); ++k) {
+        const double p = kPercentiles[k] / 100;
+        CHECK(s.percentile[k] == percentile_type7(sorted, p));  // the same two values, the same arithmetic
+        const double half = std::sqrt(p * (1 - p) / static_cast<double>(n));
+        const double lo = std::max(0.0, p - half), hi = std::min(1.0, p + half);
+        const double se = hi > lo ? (percentile_type7(sorted, hi) - percentile_type7(sorted, lo)) * (half / (hi - lo)) : 0.0;
+        CHECK(s.percentile_se[k] == se);
+      }
+      std::sort(work.begin(), work.end());
+      CHECK(work == sorted);  // reordered, nothing lost
+      ++checked;
+    }
+  CHECK(checked == 16);
 }

@@ -134,6 +134,11 @@ int main(int argc, char** argv) {
   mc_cmd->add_option("--jobs", mopt.jobs, "threads (default: every core); the output does not depend on it")
       ->check(CLI::Range(1, 1024));
   mc_cmd->add_option("--samples-out", mopt.samples_out, "also write every sample's inputs and outputs to this CSV file");
+  mc_cmd->add_option("--plot", mopt.plot.out_dir, "also draw the figures into this directory (gnuplot)");
+  mc_cmd->add_flag("--png", mopt.plot.png, "figures as PNG instead of SVG");
+  std::vector<std::string> scatter;
+  mc_cmd->add_option("--scatter", scatter, "the two outputs of the scatter figure (default: both vehicles' delta_v_magnitude)")
+      ->expected(2);
   mc_cmd->add_option("--strategy", mopt.strategies, "replace the case's strategies (as solve's --strategy)");
   std::vector<std::string> mc_precisions = impact3d::io::precision_names();
   std::erase(mc_precisions, "exact");
@@ -198,6 +203,7 @@ int main(int argc, char** argv) {
   if (mc_cmd->parsed())
     return guarded("", [&] {
       mopt.engine = mc_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
+      if (scatter.size() == 2) mopt.plot.scatter_x = scatter[0], mopt.plot.scatter_y = scatter[1];
       return impact3d::cli::montecarlo(mopt);
     });
   if (verify_cmd->parsed()) return guarded("", [&] { return impact3d::verification::verify(vopt); });

@@ -53,6 +53,10 @@ int montecarlo(const MonteCarloCliOptions& o) {
   }
   if (o.samples) u.samples = *o.samples;
   if (o.seed) u.seed = *o.seed;
+  if (!o.plot.out_dir.empty()) {
+    check_plot_options(o.plot);
+    mo.keep_samples = true;
+  }
   // The samples' file is opened before the run, so that a run is not lost to a path that cannot be written.
   std::FILE* samples_file = nullptr;
   if (!o.samples_out.empty()) {
@@ -91,6 +95,7 @@ int montecarlo(const MonteCarloCliOptions& o) {
     closer.f = nullptr;
     if (std::fclose(samples_file) != 0 || !ok) throw UserError(fmt::format("--samples-out: cannot write {}", o.samples_out));
   }
+  if (!o.plot.out_dir.empty()) montecarlo_plot(run, o.plot);
   const std::string out = o.format == "json" ? io::montecarlo_json(run) : io::montecarlo_text(run);
   std::fwrite(out.data(), 1, out.size(), stdout);
   return 0;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "impact3d/numeric/problem.hpp"
+#include "montecarlo_plot.hpp"
 
 namespace impact3d::cli {
 
@@ -17,6 +18,7 @@ struct MonteCarloCliOptions {
   std::optional<std::uint64_t> samples, seed;  // replace the file's
   unsigned jobs = 0;
   std::string samples_out;  // every sample as CSV, when given
+  MonteCarloPlotOptions plot;  // figures, when out_dir is given
   std::vector<std::string> strategies;
   std::string precision = "double";
   Engine engine = Engine::generated;

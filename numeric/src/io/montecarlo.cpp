@@ -12,6 +12,7 @@
 #include <exception>
 #include <limits>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -22,6 +23,8 @@
 #include "impact3d/io/format_double.hpp"
 #include "impact3d/io/json_pick.hpp"
 #include "impact3d/io/render.hpp"
+#include "impact3d/io/to_scene.hpp"
+#include "impact3d/numeric/analysis.hpp"
 #include "impact3d/uncertainty/portable_math.hpp"
 
 namespace impact3d::io {
@@ -59,6 +62,9 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::uint64_t kChunk = 64;  // samples a thread takes at once
+// The value an unbounded end of a distribution is probed at: inside the case's magnitude limit (1e12),
+// outside any field's bounds.
+constexpr double kFar = 1e11;
 
 // What the pick records of each result document: every output, then the regime.
 JsonPick make_pick() {
@@ -75,9 +81,11 @@ JsonPick make_pick() {
 
 // A distribution's values reach a field the case bounds only inside its support: each end is tried on
 // the case reader (the case's own rules, not a copy of them), an unbounded end as a value far out.
-void check_supports(CaseVariants& variants, const UncertaintySpec& u) {
+// Returns, per input, whether both ends passed the reader with no error at all: then the reader takes
+// every value between them (its rules on one number are ranges), which the direct route relies on.
+std::vector<char> check_supports(CaseVariants& variants, const UncertaintySpec& u) {
+  std::vector<char> clean(u.inputs.size(), 1);
   using Kind = uncertainty::Distribution::Kind;
-  constexpr double kFar = 1e11;  // inside the case's magnitude limit, outside any field's bounds
   const std::vector<double> base = variants.values();
   for (std::size_t i = 0; i < u.inputs.size(); ++i) {
     const auto& d = u.inputs[i].distribution;
@@ -106,6 +114,7 @@ void check_supports(CaseVariants& variants, const UncertaintySpec& u) {
       try {
         variants.with(values.data());
       } catch (const CaseError& e) {
+        clean[i] = 0;
         if (e.path != path_text(u.inputs[i].path)) continue;  // a rule of the whole case: the sample's to meet
         const std::string kind(uncertainty::kind_name(d.kind));
         if (end.bounded)
@@ -119,6 +128,39 @@ void check_supports(CaseVariants& variants, const UncertaintySpec& u) {
       }
     }
   }
+  return clean;
+}
+
+// The numbers of a read case that the reader checks one at a time, by a range (> 0, >= 0, [0, 1], the
+// magnitude limits), named by their paths: a sample may write these straight into a copy of the case.
+// An inertia tensor (symmetric, positive definite), an orientation matrix and contact vectors are
+// checked together with their neighbours, and are left to the reader.
+std::vector<std::pair<std::string, Number*>> single_numbers(CaseSpec& spec) {
+  std::vector<std::pair<std::string, Number*>> out;
+  for (int v = 0; v < 2; ++v) {
+    VehicleSpec& veh = spec.vehicles[static_cast<std::size_t>(v)];
+    const std::string at = fmt::format("$.vehicles[{}].", v);
+    out.emplace_back(at + "mass", &veh.mass);
+    out.emplace_back(at + "orientation_deg.yaw", &veh.yaw);
+    out.emplace_back(at + "orientation_deg.pitch", &veh.pitch);
+    out.emplace_back(at + "orientation_deg.roll", &veh.roll);
+    for (int k = 0; k < 3; ++k) {
+      out.emplace_back(fmt::format("{}velocity[{}]", at, k), &veh.velocity[static_cast<std::size_t>(k)]);
+      out.emplace_back(fmt::format("{}angular_velocity[{}]", at, k), &veh.angular_velocity[static_cast<std::size_t>(k)]);
+      out.emplace_back(fmt::format("{}impulse_center[{}]", at, k), &veh.impulse_center[static_cast<std::size_t>(k)]);
+    }
+  }
+  if (!spec.contact.by_vectors) {
+    out.emplace_back("$.contact.normal_yaw_deg", &spec.contact.normal_yaw);
+    out.emplace_back("$.contact.normal_pitch_deg", &spec.contact.normal_pitch);
+    out.emplace_back("$.contact.tangent_roll_deg", &spec.contact.tangent_roll);
+  }
+  out.emplace_back("$.restitution", &spec.restitution);
+  for (auto& st : spec.strategies)
+    for (auto& [key, number] : st.numbers)
+      if (number) out.emplace_back(st.path + "." + key, &*number);
+  for (auto& [path, number] : out) path = path_text(parse_json_path(path, "single_numbers"));
+  return out;
 }
 
 // What a sample's failure is counted as.
@@ -127,6 +169,38 @@ std::string reason_of(const CaseError& e) {
   if (what.find("not approaching") != std::string_view::npos) return "not approaching";
   if (what.rfind("no solution", 0) == 0) return "no solution";
   return "invalid " + e.path;
+}
+
+// The numbers of one result as its document writes them (result_json.hpp, write_solution): each value
+// divided by its unit factor as the writer divides it, null (here NaN) where the writer writes null,
+// and not written where the writer leaves the key out. In the order of monte_carlo_outputs().
+void outputs_of_solution(const Solution<double>& s, const UnitFactors<double>& f, double* v, char* written) {
+  std::size_t c = 0;
+  auto put = [&](double x) { v[c] = std::isfinite(x) ? x : kNaN, written[c++] = 1; };
+  auto maybe = [&](const std::optional<double>& x) {  // a key the writer leaves out when absent
+    if (x) put(*x);
+    else written[c++] = 0;
+  };
+  auto null_or = [&](const std::optional<double>& x, double factor) { put(x ? *x / factor : kNaN); };
+  auto vec = [&](const Vec3<double>& x, double factor) {
+    for (int k = 0; k < 3; ++k) put(x[k] / factor);
+  };
+  const auto& imp = s.impulse;
+  maybe(imp.mu), maybe(imp.mu_t), maybe(imp.mu_z);
+  maybe(imp.gir), maybe(imp.cir), maybe(imp.mu_t_critical), maybe(imp.mu_z_critical);
+  maybe(imp.plane_angle_deg);
+  vec(imp.P_C, f.impulse), vec(s.P_W, f.impulse);
+  vec(s.V_ri, f.velocity), vec(s.V_rf, f.velocity);
+  put(s.sliding_before / f.velocity), put(s.sliding_after / f.velocity);
+  null_or(s.swerve_deg, 1.0), null_or(s.swerve_speed, f.velocity);
+  put(s.restitution_effective);
+  for (int i = 0; i < 2; ++i) {
+    vec(s.after[i].v_W, f.velocity), vec(s.after[i].w_B, f.angular_velocity), vec(s.change[i].dv_W, f.velocity);
+    put(s.change[i].dv / f.velocity);
+    null_or(s.change[i].pdof_deg, 1.0);
+  }
+  put(s.energy_before / f.energy), put(s.energy_after / f.energy), put(s.energy_loss / f.energy);
+  if (c != monte_carlo_outputs().size()) throw std::logic_error("outputs_of_solution and monte_carlo_outputs disagree");
 }
 
 struct Tally {
@@ -139,24 +213,40 @@ struct Tally {
 
 class Worker {
  public:
+  // `direct`: each input writes straight into a copy of the read case (single_numbers) rather than
+  // into its text to be read again; empty when some input needs the reader.
   Worker(const CaseVariants& variants, const uncertainty::Sampler& sampler, const MonteCarloOptions& o,
-         std::size_t results, MonteCarloRun& run, std::vector<double>& store, std::mutex& reasons_lock)
+         std::size_t results, MonteCarloRun& run, std::vector<double>& store, std::mutex& reasons_lock,
+         const std::vector<std::string>& direct)
       : variants_(variants), sampler_(sampler), o_(o), pick_(make_pick()), tally_(results), run_(run), store_(store),
-        reasons_lock_(reasons_lock), values_(sampler.size()) {
+        reasons_lock_(reasons_lock), values_(sampler.size()), spec_(variants.base()) {
     for (auto& t : tally_) t.written.assign(monte_carlo_outputs().size(), false);
+    if (direct.empty()) return;
+    const auto numbers = single_numbers(spec_);
+    for (const std::string& path : direct)
+      for (const auto& [p, number] : numbers)
+        if (p == path) slots_.push_back(number);
+    if (slots_.size() != direct.size()) slots_.clear();
+    if (!o_.strategies.empty()) spec_.strategies = o_.strategies;
   }
+  Worker(const Worker&) = delete;  // slots_ point into spec_
+  Worker& operator=(const Worker&) = delete;
 
   void sample(std::uint64_t i) {
     sampler_.draw(i, values_.data());
     if (o_.keep_samples) std::copy(values_.begin(), values_.end(), run_.inputs_of.begin() + static_cast<std::ptrdiff_t>(i * values_.size()));
-    CaseSpec spec;
-    try {
-      spec = variants_.with(values_.data());
-    } catch (const CaseError& e) {
-      for (std::size_t k = 0; k < tally_.size(); ++k) reject(i, k, e);
-      return;
+    const bool direct = write_direct();
+    CaseSpec read;
+    if (!direct) {
+      try {
+        read = variants_.with(values_.data());
+      } catch (const CaseError& e) {
+        for (std::size_t k = 0; k < tally_.size(); ++k) reject(i, k, e);
+        return;
+      }
+      if (!o_.strategies.empty()) read.strategies = o_.strategies;
     }
-    if (!o_.strategies.empty()) spec.strategies = o_.strategies;
+    const CaseSpec& spec = direct ? spec_ : read;
     try {
       solve(i, spec, 0, tally_.size());
     } catch (const SolveError& e) {
@@ -186,9 +276,58 @@ class Worker {
   std::vector<Tally>& tally() { return tally_; }
 
  private:
-  // Results first .. first + count of sample i, from the document of `spec` (whose strategies are
-  // those results).
+  // The sample written into spec_, as the reader would have read it from its 17-digit text; false
+  // where the reader must decide: no slots, or a value beyond the magnitudes the probes covered or
+  // below the case's smallest magnitude.
+  bool write_direct() {
+    if (slots_.empty()) return false;
+    for (double v : values_)
+      if (!std::isfinite(v) || (v != 0 && (std::fabs(v) < 1e-99 || std::fabs(v) > kFar))) return false;
+    char buf[32];
+    for (std::size_t j = 0; j < slots_.size(); ++j) {
+      slots_[j]->value = values_[j];
+      slots_[j]->text.assign(buf, format_g17(buf, values_[j]));
+    }
+    return true;
+  }
+
+ private:
+  // Results first .. first + count of sample i, where `spec`'s strategies are those results.
   void solve(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
+    if (o_.precision == "double") solve_direct(i, spec, first, count);
+    else solve_document(i, spec, first, count);
+  }
+
+  // At double: the document's numbers taken from the analysis it is written from, without the text
+  // (outputs_of_solution); `tests/check_montecarlo.cpp` holds them to the document's, bit for bit.
+  void solve_direct(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
+    const Scene<double> scene = to_scene<double>(spec);
+    const Analysis<double> a = analyze(scene, to_strategies<double>(spec), o_.engine);
+    const UnitFactors<double> f = unit_factors<double>(spec.units);
+    const std::size_t outputs = monte_carlo_outputs().size(), n = run_.samples;
+    for (std::size_t k = first; k < first + count; ++k) {
+      const Solution<double>& sol = a.solutions[k - first];
+      Tally& t = tally_[k];
+      ++t.solved;
+      WarningSet codes = 0;
+      for (const auto& w : sol.warnings) codes |= warning_bit(w.code);
+      for (std::size_t w = 0; w < kWarningNames.size(); ++w)
+        if (has_warning(codes, static_cast<WarningCode>(w))) ++t.warnings[w];
+      const auto r = static_cast<std::size_t>(
+          std::find(kRegimeNames.begin(), kRegimeNames.end(), regime_name(sol.impulse.regime)) - kRegimeNames.begin());
+      ++t.regimes[r];
+      if (o_.keep_samples) run_.regime_of[k][i] = static_cast<std::int8_t>(r);
+      outputs_of_solution(sol, f, values_out_.data(), written_.data());
+      for (std::size_t c = 0; c < outputs; ++c)
+        if (written_[c]) {
+          t.written[c] = true;
+          store_[(k * outputs + c) * n + i] = values_out_[c];
+        }
+    }
+  }
+
+  // At other precisions: the outputs picked from the document as it is written, and read back.
+  void solve_document(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
     pick_.clear();
     RenderOptions ro;
     ro.format = "jsonl";
@@ -253,6 +392,10 @@ class Worker {
   std::mutex& reasons_lock_;
   std::vector<double> values_;
   std::vector<WarningSet> codes_;
+  CaseSpec spec_;                // the read case, for the direct route
+  std::vector<Number*> slots_;  // the inputs' numbers in spec_
+  std::vector<double> values_out_ = std::vector<double>(monte_carlo_outputs().size());
+  std::vector<char> written_ = std::vector<char>(monte_carlo_outputs().size());
 };
 
 void merge(std::vector<Tally>& into, const std::vector<Tally>& from) {
@@ -282,7 +425,27 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
     where.push_back(fmt::format("$.inputs[{}].path", i));
   }
   CaseVariants variants(case_text, paths, where);
-  check_supports(variants, u);
+  const std::vector<char> clean = check_supports(variants, u);
+  if (!o.strategies.empty())
+    for (std::size_t i = 0; i < u.inputs.size(); ++i)
+      if (!u.inputs[i].path.empty() && u.inputs[i].path[0].kind == PathStep::Kind::key && u.inputs[i].path[0].key == "strategy")
+        throw CaseError("--strategy", fmt::format("replaces the case's strategies, which $.inputs[{}] varies ({})", i,
+                                                  u.inputs[i].path_text));
+  // The direct route when every input is a single number the probes passed (the reader's ranges).
+  std::vector<std::string> direct;
+  {
+    CaseSpec probe = variants.base();
+    const auto numbers = single_numbers(probe);
+    for (std::size_t i = 0; i < u.inputs.size(); ++i) {
+      const std::string path = path_text(u.inputs[i].path);
+      const bool single = std::any_of(numbers.begin(), numbers.end(), [&](const auto& n) { return n.first == path; });
+      if (!single || !clean[i]) {
+        direct.clear();
+        break;
+      }
+      direct.push_back(path);
+    }
+  }
   const uncertainty::Sampler sampler = make_sampler(u);
 
   MonteCarloRun run;
@@ -290,6 +453,7 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   run.seed = u.seed;
   run.precision = o.precision;
   for (const auto& in : u.inputs) run.inputs.push_back(in.path_text);
+  run.direct = !direct.empty();
   const std::vector<StrategySpec>& strategies = o.strategies.empty() ? variants.base().strategies : o.strategies;
   const std::size_t results = strategies.size(), outputs = monte_carlo_outputs().size();
   const std::uint64_t n = u.samples;
@@ -307,9 +471,9 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
 
   const unsigned jobs = std::max(1u, o.jobs ? o.jobs : std::thread::hardware_concurrency());
   std::mutex reasons_lock;
-  std::vector<Worker> workers;
-  workers.reserve(jobs);
-  for (unsigned j = 0; j < jobs; ++j) workers.emplace_back(variants, sampler, o, results, run, store, reasons_lock);
+  std::vector<std::unique_ptr<Worker>> workers;
+  for (unsigned j = 0; j < jobs; ++j)
+    workers.push_back(std::make_unique<Worker>(variants, sampler, o, results, run, store, reasons_lock, direct));
   std::atomic<std::uint64_t> next{0}, done{0};
   std::atomic<bool> failed{false};
   std::exception_ptr error;
@@ -331,9 +495,9 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   };
   {
     std::vector<std::jthread> threads;
-    for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(work, std::ref(workers[j]));
+    for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(work, std::ref(*workers[j]));
     if (o.progress) {  // the calling thread reports
-      std::jthread own(work, std::ref(workers[0]));
+      std::jthread own(work, std::ref(*workers[0]));
       while (done < n && !failed) {
         o.progress(done);
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -341,14 +505,14 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
       own.join();
       o.progress(done);
     } else {
-      work(workers[0]);
+      work(*workers[0]);
     }
   }
   if (error) std::rethrow_exception(error);
 
   std::vector<Tally> tally(results);
   for (auto& t : tally) t.written.assign(outputs, false);
-  for (auto& w : workers) merge(tally, w.tally());
+  for (auto& w : workers) merge(tally, w->tally());
 
   for (std::size_t k = 0; k < results; ++k) {
     StrategySummary s;
@@ -357,20 +521,43 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
     for (auto& [reason, r] : tally[k].rejected) s.rejected.push_back(std::move(r));
     s.regimes = tally[k].regimes;
     s.warnings = tally[k].warnings;
+    for (std::size_t c = 0; c < outputs; ++c)
+      if (tally[k].written[c]) s.outputs.push_back({&monte_carlo_outputs()[c], 0, {}});
+    run.results.push_back(std::move(s));
+  }
+  // Each output's summary on its own, on the run's threads: sorting dominates, and the summaries do
+  // not depend on each other, so the split changes nothing.
+  std::vector<std::pair<std::size_t, OutputSummary*>> todo;  // (result, summary)
+  for (std::size_t k = 0; k < results; ++k)
+    for (auto& summary : run.results[k].outputs) todo.emplace_back(k, &summary);
+  std::atomic<std::size_t> next_summary{0};
+  auto summarize_some = [&] {
     std::vector<double> column;
-    for (std::size_t c = 0; c < outputs; ++c) {
-      if (!tally[k].written[c]) continue;
-      const double* at = store.data() + (k * outputs + c) * n;
+    for (std::size_t t; (t = next_summary++) < todo.size();) {
+      const auto [k, summary] = todo[t];
+      const OutputPath& out = *summary->output;
+      const double* at = store.data() + (k * outputs + static_cast<std::size_t>(&out - monte_carlo_outputs().data())) * n;
       column.clear();
       for (std::uint64_t i = 0; i < n; ++i)
         if (std::isfinite(at[i])) column.push_back(at[i]);
-      const OutputPath& out = monte_carlo_outputs()[c];
-      OutputSummary summary{&out, s.solved - column.size(), {}};
-      summary.summary = out.angle ? uncertainty::summarize_angle_deg(column, out.from_zero) : uncertainty::summarize(column);
-      s.outputs.push_back(std::move(summary));
+      summary->undefined = run.results[k].solved - column.size();
+      summary->summary = out.angle ? uncertainty::summarize_angle_deg(column, out.from_zero) : uncertainty::summarize(column);
     }
-    run.results.push_back(std::move(s));
+  };
+  auto summarize = [&] {
+    try {
+      summarize_some();
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(error_lock);
+      if (!error) error = std::current_exception();
+    }
+  };
+  {
+    std::vector<std::jthread> threads;
+    for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(summarize);
+    summarize();
   }
+  if (error) std::rethrow_exception(error);
   if (o.keep_samples) run.outputs_of = std::move(store);
   return run;
 }

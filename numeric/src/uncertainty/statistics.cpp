@@ -1,6 +1,7 @@
 #include "impact3d/uncertainty/statistics.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,29 +24,66 @@ class Sum {
   double s_ = 0, c_ = 0;
 };
 
-Summary summarize_sorted(const std::vector<double>& x) {
-  Summary s;
-  s.count = x.size();
-  if (x.empty()) return s;
+// The mean and standard deviation, summed in the order given (two passes: the squares of deviations,
+// not the difference of two large sums).
+void moments(const std::vector<double>& x, Summary& s) {
   const double n = static_cast<double>(x.size());
   Sum sum;
   for (double v : x) sum.add(v);
   s.mean = sum.value() / n;
-  // Two passes: the squares of deviations, not the difference of two large sums.
   Sum squares;
   for (double v : x) squares.add((v - s.mean) * (v - s.mean));
   s.sd = x.size() > 1 ? std::sqrt(squares.value() / (n - 1)) : 0.0;
   s.mean_se = s.sd / std::sqrt(n);
-  s.min = x.front();
-  s.max = x.back();
+}
+
+// The probabilities each percentile and its standard error read the order statistics at.
+struct Reads {
+  std::array<double, 9> p, lo, hi, half;
+};
+Reads reads(std::size_t count) {
+  Reads r;
+  const double n = static_cast<double>(count);
   for (std::size_t k = 0; k < kPercentiles.size(); ++k) {
-    const double p = kPercentiles[k] / 100;
-    s.percentile[k] = percentile_type7(x, p);
-    const double half = std::sqrt(p * (1 - p) / n);
-    const double lo = std::max(0.0, p - half), hi = std::min(1.0, p + half);
-    s.percentile_se[k] = hi > lo ? (percentile_type7(x, hi) - percentile_type7(x, lo)) * (half / (hi - lo)) : 0.0;
+    r.p[k] = kPercentiles[k] / 100;
+    r.half[k] = std::sqrt(r.p[k] * (1 - r.p[k]) / n);
+    r.lo[k] = std::max(0.0, r.p[k] - r.half[k]);
+    r.hi[k] = std::min(1.0, r.p[k] + r.half[k]);
   }
-  return s;
+  return r;
+}
+
+// The percentiles, min and max from values whose order statistics at the positions they read stand in
+// place (sorted, or selected by select_order_statistics).
+void percentiles(const std::vector<double>& x, const Reads& r, Summary& s) {
+  for (std::size_t k = 0; k < kPercentiles.size(); ++k) {
+    s.percentile[k] = percentile_type7(x, r.p[k]);
+    s.percentile_se[k] =
+        r.hi[k] > r.lo[k] ? (percentile_type7(x, r.hi[k]) - percentile_type7(x, r.lo[k])) * (r.half[k] / (r.hi[k] - r.lo[k])) : 0.0;
+  }
+}
+
+// The positions percentile_type7 reads at probability q: floor(h) and the one after, h = (n - 1) q.
+void positions(std::size_t n, double q, std::vector<std::size_t>& out) {
+  const auto i = static_cast<std::size_t>(std::floor(static_cast<double>(n - 1) * q));
+  out.push_back(std::min(i, n - 1));
+  out.push_back(std::min(i + 1, n - 1));
+}
+
+// Puts the k-th smallest value at position k for every k of [kb, ke) (sorted, within [first, last)
+// shifted by `offset`), and nothing else in order: each selection splits the range for the next, so
+// the cost is about n log(positions) rather than a sort's n log n. The value at each position is the
+// order statistic itself, whatever the algorithm's choices: the result is the same everywhere.
+void select_positions(double* first, double* last, const std::size_t* kb, const std::size_t* ke, std::size_t offset) {
+  while (kb != ke && last - first > 1) {
+    const std::size_t* km = kb + (ke - kb) / 2;
+    double* at = first + (*km - offset);
+    std::nth_element(first, at, last);
+    select_positions(first, at, kb, km, offset);
+    offset += static_cast<std::size_t>(at - first) + 1;
+    first = at + 1;
+    kb = km + 1;
+  }
 }
 
 // Into (-180, 180]: x is in (-540, 540], so one step of 360 at most.
@@ -68,8 +106,21 @@ double percentile_type7(const std::vector<double>& sorted, double p) {
 }
 
 Summary summarize(std::vector<double>& values) {
-  std::sort(values.begin(), values.end());
-  return summarize_sorted(values);
+  Summary s;
+  s.count = values.size();
+  if (values.empty()) return s;
+  moments(values, s);  // in the order given: the samples' order
+  const Reads r = reads(values.size());
+  std::vector<std::size_t> at = {0, values.size() - 1};
+  for (std::size_t k = 0; k < kPercentiles.size(); ++k)
+    positions(values.size(), r.p[k], at), positions(values.size(), r.lo[k], at), positions(values.size(), r.hi[k], at);
+  std::sort(at.begin(), at.end());
+  at.erase(std::unique(at.begin(), at.end()), at.end());
+  select_positions(values.data(), values.data() + values.size(), at.data(), at.data() + at.size(), 0);
+  s.min = values.front();
+  s.max = values.back();
+  percentiles(values, r, s);
+  return s;
 }
 
 Summary summarize_angle_deg(std::vector<double>& values, bool from_zero) {
@@ -80,7 +131,7 @@ Summary summarize_angle_deg(std::vector<double>& values, bool from_zero) {
   if (values.size() < 2) {
     if (from_zero)
       for (double& v : values) v = v < 0 ? v + 360 : v;
-    return summarize_sorted(values);
+    return summarize(values);
   }
   // The widest gap: between neighbours, or the one across +-180 (from the last to the first).
   const std::size_t n = values.size();
@@ -92,7 +143,13 @@ Summary summarize_angle_deg(std::vector<double>& values, bool from_zero) {
     std::rotate(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(cut), values.end());
     for (std::size_t i = n - cut; i < n; ++i) values[i] += 360;  // those below the gap, now after it
   }
-  Summary s = summarize_sorted(values);
+  // Sorted, so the moments are summed in sorted order here (the samples' order is lost to the unwrapping).
+  Summary s;
+  s.count = n;
+  moments(values, s);
+  s.min = values.front();
+  s.max = values.back();
+  percentiles(values, reads(n), s);
   const auto back = [from_zero](double x) {
     x = wrap_deg(x);
     return from_zero && x < 0 ? x + 360 : x;

@@ -76,6 +76,9 @@ struct MonteCarloRun {
   std::uint64_t samples = 0, seed = 0;
   std::string precision;
   std::vector<std::string> inputs;  // the uncertain inputs' paths, as written
+  // Whether each sample was written straight into the read case (every input a number the reader
+  // checks on its own, by a range the distribution stays within), rather than read again from text.
+  bool direct = false;
   std::vector<StrategySummary> results;
   // With keep_samples: sample i's inputs at inputs_of[i * inputs.size()]; output c of result k at
   // outputs_of[(k * monte_carlo_outputs().size() + c) * samples + i] (NaN where the sample was rejected

@@ -1,6 +1,7 @@
 // What a Monte Carlo run reports of one output: mean, standard deviation and percentiles, each with its
-// Monte Carlo standard error. Everything is computed from the sorted values with +, -, *, / and sqrt
-// only, so the same values give the same bits on every platform and whatever order they came in.
+// Monte Carlo standard error. Everything is computed with +, -, *, / and sqrt only, from the values in
+// the order given (the moments) and their order statistics (the percentiles), so the same values in
+// the same order give the same bits on every platform.
 #pragma once
 
 #include <array>
@@ -23,10 +24,12 @@ struct Summary {
 };
 
 // Type 7 of Hyndman and Fan (R's and NumPy's default): x[h] interpolated linearly at h = (n - 1) p,
-// 0-based, for p in [0, 1] of the sorted values (not empty).
+// 0-based, for p in [0, 1] of the sorted values (not empty), or of values whose order statistics at
+// the two positions it reads stand in place.
 double percentile_type7(const std::vector<double>& sorted, double p);
 
-// The values' summary (they are sorted in place; none may be NaN or infinite; empty gives count 0).
+// The values' summary (they are reordered in place: the order statistics it reads are selected, not
+// sorted; none may be NaN or infinite; empty gives count 0).
 // A percentile's standard error is the quantile function's slope times the binomial standard error of
 // its probability: (Q(p + s) - Q(p - s)) / 2 with s = sqrt(p (1 - p) / n), the two probabilities kept
 // in [0, 1] (and the difference scaled to the width kept). It needs no density estimate and no
