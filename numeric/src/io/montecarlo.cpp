@@ -454,6 +454,7 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   run.precision = o.precision;
   for (const auto& in : u.inputs) run.inputs.push_back(in.path_text);
   run.direct = !direct.empty();
+  run.units = variants.base().units;
   const std::vector<StrategySpec>& strategies = o.strategies.empty() ? variants.base().strategies : o.strategies;
   const std::size_t results = strategies.size(), outputs = monte_carlo_outputs().size();
   const std::uint64_t n = u.samples;

@@ -10,6 +10,7 @@
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/result_json.hpp"
 #include "impact3d/io/montecarlo.hpp"
+#include "impact3d/io/present.hpp"
 
 namespace impact3d::io {
 
@@ -67,6 +68,7 @@ std::string montecarlo_json(const MonteCarloRun& run) {
   w.key("samples").raw(std::to_string(run.samples));
   w.key("seed").raw(std::to_string(run.seed));
   w.key("precision").string(run.precision);
+  w.key("units").string(units_name(run.units));
   w.key("inputs").begin_array();
   for (const auto& in : run.inputs) w.string(in);
   w.end_array();
@@ -111,6 +113,8 @@ std::string montecarlo_json(const MonteCarloRun& run) {
 
 std::string montecarlo_text(const MonteCarloRun& run) {
   std::string out = fmt::format("Monte Carlo: {} samples, seed {}, {} precision\n", run.samples, run.seed, run.precision);
+  out += fmt::format("units: {} ({}, {}, {}, {}); angles in degrees\n", units_name(run.units), unit_label(run.units, "velocity"),
+                     unit_label(run.units, "angular_velocity"), unit_label(run.units, "impulse"), unit_label(run.units, "energy"));
   out += "uncertain inputs:\n";
   for (const auto& in : run.inputs) out += "  " + printable(in) + "\n";
   for (const auto& r : run.results) {

@@ -75,6 +75,7 @@ struct StrategySummary {
 struct MonteCarloRun {
   std::uint64_t samples = 0, seed = 0;
   std::string precision;
+  Units units = Units::SI;          // the case's: every output is in them
   std::vector<std::string> inputs;  // the uncertain inputs' paths, as written
   // Whether each sample was written straight into the read case (every input a number the reader
   // checks on its own, by a range the distribution stays within), rather than read again from text.
