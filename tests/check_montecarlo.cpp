@@ -107,9 +107,34 @@ TEST_CASE("an output linear in a normal input: the analytic mean and sd, and the
     // of the output's scale covers both.
     const double scale = std::fabs(a) + std::fabs(b) * mean;
     CHECK(std::fabs(s.mean - (a + b * (mean_in - mean))) <= 4096 * kEps * scale);
+    // The first order is exact for a linear map: its mean is the document's value at the input's mean
+    // and its sd |b| sd, b here a difference over a unit step of a linear map (2^12 eps as above).
+    const std::size_t c = static_cast<std::size_t>(output(r, path).output - monte_carlo_outputs().data());
+    CHECK(std::fabs(r.linear.mean[c] - a) <= 4096 * kEps * scale);
+    CHECK(std::fabs(r.linear.sd[c] - std::fabs(b) * sd) <= 4096 * kEps * scale * sd);
     ++checked;
   }
   CHECK(checked == 6);
+  CHECK(r.linear.note.empty());
+  CHECK(r.linear.regime == "full");
+  CHECK_FALSE(r.linear.regime_switch);
+  CHECK(r.linear.differs.empty());
+}
+
+TEST_CASE("the first order flags the regime switch and the non-linearity that the samples show") {
+  // The Figure 8 case's pc-crash (its $.strategy[1]) with mu uniform on [0.2, 0.6]: its GIR is 0.48,
+  // so the samples above it take the Full Impact, where nothing depends on mu, while the mean (0.4)
+  // takes the sliding one, where the impulse grows with mu.
+  const UncertaintySpec u = read_uncertainty(R"({"samples": 4000, "seed": 3, "inputs": [
+      {"path": "$.strategy[1].mu", "distribution": "uniform", "min": 0.2, "max": 0.6}]})");
+  const MonteCarloRun run = montecarlo(fig8(), u, {});
+  const StrategySummary& r = run.results[1];
+  CHECK(r.linear.regime == "sliding");
+  INFO("full " << r.regimes[0] << ", sliding " << r.regimes[1]);
+  REQUIRE(r.regimes[0] > 0);
+  REQUIRE(r.regimes[1] > 0);
+  CHECK(r.linear.regime_switch);
+  CHECK_FALSE(r.linear.differs.empty());
 }
 
 TEST_CASE("percentiles of a uniform input through an increasing map are the map's percentiles") {

@@ -15,6 +15,7 @@
 #include "batch.hpp"
 #include "montecarlo.hpp"
 #include "plot.hpp"
+#include "sensitivity.hpp"
 #include "user_error.hpp"
 
 namespace {
@@ -146,6 +147,17 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(mc_precisions));
   mc_cmd->add_option("--engine", mc_engine, "generated (default) or direct, as solve's")
       ->check(CLI::IsMember({"generated", "direct"}));
+  auto* sens_cmd = app.add_subcommand(
+      "sensitivity", "derivatives of every result number by every numeric input, the regime held fixed (many-cases.md)");
+  impact3d::cli::SensitivityCliOptions sopt;
+  std::string sens_engine = "generated";
+  sens_cmd->add_option("case", sopt.case_path, "case file (JSON)")->required();
+  sens_cmd->add_option("--format", sopt.format, "text report (default) or contract JSON")->check(CLI::IsMember({"text", "json"}));
+  sens_cmd->add_option("--strategy", sopt.strategies, "replace the case's strategies (as solve's --strategy)");
+  sens_cmd->add_option("--engine", sens_engine, "generated (default) or direct, as solve's")
+      ->check(CLI::IsMember({"generated", "direct"}));
+  sens_cmd->add_option("--plot", sopt.plot_dir, "also draw a tornado figure of each vehicle's delta-V into this directory");
+  sens_cmd->add_flag("--png", sopt.png, "figures as PNG instead of SVG");
   auto* compare_cmd = app.add_subcommand("compare", "compare another tool's results with reference results");
   std::string reference, other;
   impact3d::verification::CompareOptions copt;
@@ -205,6 +217,11 @@ int main(int argc, char** argv) {
       mopt.engine = mc_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
       if (scatter.size() == 2) mopt.plot.scatter_x = scatter[0], mopt.plot.scatter_y = scatter[1];
       return impact3d::cli::montecarlo(mopt);
+    });
+  if (sens_cmd->parsed())
+    return guarded(sopt.case_path, [&] {
+      sopt.engine = sens_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
+      return impact3d::cli::sensitivity(sopt);
     });
   if (verify_cmd->parsed()) return guarded("", [&] { return impact3d::verification::verify(vopt); });
   if (compare_cmd->parsed()) return guarded("", [&] { return impact3d::verification::compare(reference, other, copt); });

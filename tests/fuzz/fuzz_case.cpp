@@ -1,10 +1,12 @@
 // libFuzzer harness: any bytes as a case file, read and, when valid, solved at every precision and
-// written as the result document; the reader must reject or the solve must finish, never crash or hang.
+// written as the result document, and differentiated (`sensitivity`) and written; the reader must
+// reject or the solve must finish, never crash or hang.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 
 #include "impact3d/io/read_case.hpp"
+#include "impact3d/io/sensitivity.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 
@@ -38,6 +40,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   solve_at<mp::float128>(spec, Engine::generated);
   solve_at<mp::float50>(spec, Engine::generated);
   solve_at<mp::float100>(spec, Engine::direct);
+  try {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    for (Engine engine : {Engine::generated, Engine::direct}) {
+      io::SensitivityOptions o;
+      o.engine = engine;
+      const io::SensitivityRun run = io::sensitivity(text, o);
+      (void)io::sensitivity_json(run);
+      (void)io::sensitivity_text(run);
+    }
+  } catch (const io::CaseError&) {
+  } catch (const SolveError&) {
+  }
   try {
     (void)exact_analyze(io::to_scene<rational>(spec), io::to_strategies<rational>(spec));
   } catch (const Irrational&) {

@@ -24,6 +24,9 @@
 #include "impact3d/io/json_pick.hpp"
 #include "impact3d/io/render.hpp"
 #include "impact3d/io/to_scene.hpp"
+#include "impact3d/io/case_numbers.hpp"
+#include "impact3d/io/montecarlo_linear.hpp"
+#include "impact3d/io/result_numbers.hpp"
 #include "impact3d/numeric/analysis.hpp"
 #include "impact3d/uncertainty/portable_math.hpp"
 
@@ -131,76 +134,12 @@ std::vector<char> check_supports(CaseVariants& variants, const UncertaintySpec& 
   return clean;
 }
 
-// The numbers of a read case that the reader checks one at a time, by a range (> 0, >= 0, [0, 1], the
-// magnitude limits), named by their paths: a sample may write these straight into a copy of the case.
-// An inertia tensor (symmetric, positive definite), an orientation matrix and contact vectors are
-// checked together with their neighbours, and are left to the reader.
-std::vector<std::pair<std::string, Number*>> single_numbers(CaseSpec& spec) {
-  std::vector<std::pair<std::string, Number*>> out;
-  for (int v = 0; v < 2; ++v) {
-    VehicleSpec& veh = spec.vehicles[static_cast<std::size_t>(v)];
-    const std::string at = fmt::format("$.vehicles[{}].", v);
-    out.emplace_back(at + "mass", &veh.mass);
-    out.emplace_back(at + "orientation_deg.yaw", &veh.yaw);
-    out.emplace_back(at + "orientation_deg.pitch", &veh.pitch);
-    out.emplace_back(at + "orientation_deg.roll", &veh.roll);
-    for (int k = 0; k < 3; ++k) {
-      out.emplace_back(fmt::format("{}velocity[{}]", at, k), &veh.velocity[static_cast<std::size_t>(k)]);
-      out.emplace_back(fmt::format("{}angular_velocity[{}]", at, k), &veh.angular_velocity[static_cast<std::size_t>(k)]);
-      out.emplace_back(fmt::format("{}impulse_center[{}]", at, k), &veh.impulse_center[static_cast<std::size_t>(k)]);
-    }
-  }
-  if (!spec.contact.by_vectors) {
-    out.emplace_back("$.contact.normal_yaw_deg", &spec.contact.normal_yaw);
-    out.emplace_back("$.contact.normal_pitch_deg", &spec.contact.normal_pitch);
-    out.emplace_back("$.contact.tangent_roll_deg", &spec.contact.tangent_roll);
-  }
-  out.emplace_back("$.restitution", &spec.restitution);
-  for (auto& st : spec.strategies)
-    for (auto& [key, number] : st.numbers)
-      if (number) out.emplace_back(st.path + "." + key, &*number);
-  for (auto& [path, number] : out) path = path_text(parse_json_path(path, "single_numbers"));
-  return out;
-}
-
 // What a sample's failure is counted as.
 std::string reason_of(const CaseError& e) {
   const std::string_view what = e.what();
   if (what.find("not approaching") != std::string_view::npos) return "not approaching";
   if (what.rfind("no solution", 0) == 0) return "no solution";
   return "invalid " + e.path;
-}
-
-// The numbers of one result as its document writes them (result_json.hpp, write_solution): each value
-// divided by its unit factor as the writer divides it, null (here NaN) where the writer writes null,
-// and not written where the writer leaves the key out. In the order of monte_carlo_outputs().
-void outputs_of_solution(const Solution<double>& s, const UnitFactors<double>& f, double* v, char* written) {
-  std::size_t c = 0;
-  auto put = [&](double x) { v[c] = std::isfinite(x) ? x : kNaN, written[c++] = 1; };
-  auto maybe = [&](const std::optional<double>& x) {  // a key the writer leaves out when absent
-    if (x) put(*x);
-    else written[c++] = 0;
-  };
-  auto null_or = [&](const std::optional<double>& x, double factor) { put(x ? *x / factor : kNaN); };
-  auto vec = [&](const Vec3<double>& x, double factor) {
-    for (int k = 0; k < 3; ++k) put(x[k] / factor);
-  };
-  const auto& imp = s.impulse;
-  maybe(imp.mu), maybe(imp.mu_t), maybe(imp.mu_z);
-  maybe(imp.gir), maybe(imp.cir), maybe(imp.mu_t_critical), maybe(imp.mu_z_critical);
-  maybe(imp.plane_angle_deg);
-  vec(imp.P_C, f.impulse), vec(s.P_W, f.impulse);
-  vec(s.V_ri, f.velocity), vec(s.V_rf, f.velocity);
-  put(s.sliding_before / f.velocity), put(s.sliding_after / f.velocity);
-  null_or(s.swerve_deg, 1.0), null_or(s.swerve_speed, f.velocity);
-  put(s.restitution_effective);
-  for (int i = 0; i < 2; ++i) {
-    vec(s.after[i].v_W, f.velocity), vec(s.after[i].w_B, f.angular_velocity), vec(s.change[i].dv_W, f.velocity);
-    put(s.change[i].dv / f.velocity);
-    null_or(s.change[i].pdof_deg, 1.0);
-  }
-  put(s.energy_before / f.energy), put(s.energy_after / f.energy), put(s.energy_loss / f.energy);
-  if (c != monte_carlo_outputs().size()) throw std::logic_error("outputs_of_solution and monte_carlo_outputs disagree");
 }
 
 struct Tally {
@@ -299,7 +238,7 @@ class Worker {
   }
 
   // At double: the document's numbers taken from the analysis it is written from, without the text
-  // (outputs_of_solution); `tests/check_montecarlo.cpp` holds them to the document's, bit for bit.
+  // (numbers_of_solution); `tests/check_montecarlo.cpp` holds them to the document's, bit for bit.
   void solve_direct(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
     const Scene<double> scene = to_scene<double>(spec);
     const Analysis<double> a = analyze(scene, to_strategies<double>(spec), o_.engine);
@@ -317,7 +256,7 @@ class Worker {
           std::find(kRegimeNames.begin(), kRegimeNames.end(), regime_name(sol.impulse.regime)) - kRegimeNames.begin());
       ++t.regimes[r];
       if (o_.keep_samples) run_.regime_of[k][i] = static_cast<std::int8_t>(r);
-      outputs_of_solution(sol, f, values_out_.data(), written_.data());
+      numbers_of_solution(sol, f, values_out_.data(), written_.data());
       for (std::size_t c = 0; c < outputs; ++c)
         if (written_[c]) {
           t.written[c] = true;
@@ -560,6 +499,7 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   }
   if (error) std::rethrow_exception(error);
   if (o.keep_samples) run.outputs_of = std::move(store);
+  linearize(run, variants, u, o);
   return run;
 }
 

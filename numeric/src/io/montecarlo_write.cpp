@@ -23,9 +23,16 @@ void put(JsonWriter& w, double x) {
 
 double fraction(std::uint64_t count, std::uint64_t of) { return of ? static_cast<double>(count) / static_cast<double>(of) : 0.0; }
 
-void write_summary(JsonWriter& w, const OutputSummary& o) {
+void write_summary(JsonWriter& w, const OutputSummary& o, const Linearized& lin) {
   const auto& s = o.summary;
   w.begin_object();
+  const auto c = static_cast<std::size_t>(o.output - monte_carlo_outputs().data());
+  if (lin.note.empty() && c < lin.mean.size()) {
+    w.key("linearized").begin_object();
+    put(w.key("mean"), lin.mean[c]);
+    put(w.key("sd"), lin.sd[c]);
+    w.end_object();
+  }
   w.key("count").raw(std::to_string(s.count));
   if (o.undefined) w.key("undefined").raw(std::to_string(o.undefined));
   if (o.output->angle) w.key("angle").string(o.output->from_zero ? "[0, 360)" : "(-180, 180]");
@@ -58,6 +65,36 @@ void cell(std::string& out, std::string_view s) {
     out += c;
   }
   out += '"';
+}
+
+// The first-order propagation beside the samples: ΔV, PDOF and the energy loss, and where the two part.
+std::string linear_text(const StrategySummary& r) {
+  const Linearized& lin = r.linear;
+  if (!lin.note.empty()) return fmt::format("  first order: none ({})\n", printable(lin.note));
+  std::string out = fmt::format("  first order, from the derivatives at the inputs' means (regime {}):\n", lin.regime);
+  out += fmt::format("  {:<35} {:>9} {:>9} {:>10} {:>10}\n", "output", "mean", "sd", "MC mean", "MC sd");
+  for (const auto& o : r.outputs) {
+    const auto c = static_cast<std::size_t>(o.output - monte_carlo_outputs().data());
+    const std::string& t = o.output->text;
+    const bool shown = t.ends_with("delta_v_magnitude") || t.ends_with("pdof_deg") || t == "energy.loss";
+    if (!shown || !o.summary.count || c >= lin.mean.size()) continue;
+    out += fmt::format("  {:<35} {:>9.4g} {:>9.3g} {:>10.4g} {:>10.3g}\n", t, lin.mean[c], lin.sd[c], o.summary.mean, o.summary.sd);
+  }
+  if (lin.regime_switch)
+    out += "  warning: some samples take another regime than the inputs' means take;\n"
+           "    the first order holds within one regime\n";
+  if (!lin.differs.empty()) {
+    out += fmt::format("  warning: {} outputs where the first order misses the samples' mean or sd\n"
+                       "    by > 10 % of the sd + 4 SE (non-linearity, or a regime switch in range):",
+                       lin.differs.size());
+    std::size_t column = 80;
+    for (const auto& path : lin.differs) {
+      if (column + path.size() + 1 > 77) out += "\n   ", column = 3;
+      out += " " + path, column += path.size() + 1;
+    }
+    out += "\n";
+  }
+  return out;
 }
 
 }  // namespace
@@ -98,10 +135,21 @@ std::string montecarlo_json(const MonteCarloRun& run) {
     w.key("warning_probability").begin_object();
     for (std::size_t k = 0; k < kWarningNames.size(); ++k) put(w.key(kWarningNames[k]), fraction(r.warnings[k], r.solved));
     w.end_object();
+    w.key("linearization").begin_object();
+    if (!r.linear.note.empty()) {
+      w.key("note").string(r.linear.note);
+    } else {
+      w.key("regime").string(r.linear.regime);
+      w.key("regime_switch").raw(r.linear.regime_switch ? "true" : "false");
+      w.key("differs").begin_array();
+      for (const auto& path : r.linear.differs) w.string(path);
+      w.end_array();
+    }
+    w.end_object();
     w.key("outputs").begin_object();
     for (const auto& o : r.outputs) {
       w.key(o.output->text);
-      write_summary(w, o);
+      write_summary(w, o, r.linear);
     }
     w.end_object();
     w.end_object();
@@ -145,6 +193,7 @@ std::string montecarlo_text(const MonteCarloRun& run) {
       if (o.undefined) out += fmt::format("  ({} undefined)", o.undefined);
       out += "\n";
     }
+    out += linear_text(r);
   }
   return out;
 }

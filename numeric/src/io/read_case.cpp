@@ -185,6 +185,7 @@ class Reader {
     veh.inertia_path = at.str();
     if (v.is(Type::object)) {
       object(v, at, {"Ixx", "Iyy", "Izz"});
+      veh.inertia_principal = true;
       const char* keys[3] = {"Ixx", "Iyy", "Izz"};
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)

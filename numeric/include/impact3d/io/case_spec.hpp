@@ -36,6 +36,7 @@ struct VehicleSpec {
   Number mass;
   std::array<Vector3, 3> inertia;  // full tensor (the diagonal shorthand is expanded, zeros off-diagonal)
   std::string inertia_path;
+  bool inertia_principal = false;  // written as {"Ixx", "Iyy", "Izz"}
   Number yaw, pitch, roll;
   // Alternatively the orientation as a rotation matrix R_WB (rows), e.g. rational for exact arithmetic.
   std::optional<std::array<Vector3, 3>> orientation_matrix;

@@ -63,6 +63,19 @@ struct Rejections {
   std::string message;       // and its one-line problem, as `solve` prints it
 };
 
+// The first-order propagation beside the samples: each output's value at the inputs' means, and its
+// standard deviation from the derivatives there (sensitivity.hpp) and the inputs' covariance
+// (moments.hpp; a pair's correlation taken as its normal-score rho, exact for normal inputs).
+struct Linearized {
+  std::string note;              // why none was made; empty when made
+  std::string regime;            // the strategy's regime at the means
+  std::vector<double> mean, sd;  // per output of monte_carlo_outputs(); NaN where the result has none
+  // Outputs whose Monte Carlo mean or sd the linearization misses by more than 10 % of the sd plus 4
+  // standard errors: non-linearity, or a regime switch, within the input ranges.
+  std::vector<std::string> differs;
+  bool regime_switch = false;  // the samples took another regime than the means' in some sample
+};
+
 struct StrategySummary {
   StrategySpec strategy;  // as the case (or the options) give it: its echo is the document's
   std::uint64_t solved = 0;
@@ -70,6 +83,7 @@ struct StrategySummary {
   std::array<std::uint64_t, kRegimeNames.size()> regimes{};
   std::array<std::uint64_t, kWarningNames.size()> warnings{};  // solved samples with that warning
   std::vector<OutputSummary> outputs;  // in the order of monte_carlo_outputs(), those ever written
+  Linearized linear;
 };
 
 struct MonteCarloRun {

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <Eigen/Cholesky>
+#include <utility>
+#include <vector>
 
 #include "impact3d/io/case_spec.hpp"
 #include "impact3d/io/present.hpp"
@@ -16,9 +18,26 @@
 
 namespace impact3d::io {
 
+// The numbers of a case a conversion to a dual type seeds (sensitivity.cpp sets it around one
+// conversion): each gets derivative 1 in its own entry of `size`; every other number derivative 0.
+struct DualSeeds {
+  std::vector<std::pair<const Number*, int>> index;
+  int size = 0;
+};
+inline thread_local const DualSeeds* dual_seeds = nullptr;
+
 template <typename Scalar>
 Scalar to_scalar(const Number& n) {
-  return scalar_from_text<Scalar>(n.text);
+  if constexpr (is_dual_v<Scalar>) {
+    Scalar x(scalar_from_text<typename DualTraits<Scalar>::Value>(n.text));
+    if (!dual_seeds) return x;
+    x.derivatives().setZero(dual_seeds->size);
+    for (const auto& [number, i] : dual_seeds->index)
+      if (number == &n) x.derivatives()[i] = 1;
+    return x;
+  } else {
+    return scalar_from_text<Scalar>(n.text);
+  }
 }
 
 template <typename Scalar>

@@ -51,7 +51,7 @@ BodyChange<Scalar> body_change(const RigidBody<Scalar>& before, const RigidBody<
       Scalar deg = degrees(Scalar(atan2(dv_B.y(), Scalar(-dv_B.x()))));
       if (deg < Scalar(0)) deg += Scalar(360);
       c.pdof_deg = deg;
-      int hour = static_cast<int>(floor(deg / Scalar(30) + ratio<Scalar>(1, 2))) % 12;
+      int hour = static_cast<int>(to_double(floor(deg / Scalar(30) + ratio<Scalar>(1, 2)))) % 12;
       c.clock = hour == 0 ? 12 : hour;
     }
   }

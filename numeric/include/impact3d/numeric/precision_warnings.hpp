@@ -36,7 +36,7 @@ Scalar rounding_bound_of(const Scalar& amplification, const Scalar& quotient) {
 // Whether a rounding bound is within the trusted fraction (a NaN is not).
 template <typename Scalar>
 bool trusted(const Scalar& bound) {
-  return static_cast<double>(bound) <= rounding::kTrustedFraction;
+  return to_double(bound) <= rounding::kTrustedFraction;
 }
 
 // `amplification`: the problem's (rounding.hpp). Ratios carry their quotient's factor 1 + |V_cp / V_n|
@@ -50,8 +50,8 @@ void flag_precision(Solution<Scalar>& s, const Scalar& amplification) {
                             "it cannot be trusted"});
     const Scalar quotient = rounding::quotient_factor(s.V_ri);
     s.rounding_bound = rounding_bound_of(amplification, quotient);
-    const double a = static_cast<double>(Scalar(amplification * quotient));
-    const double bound = static_cast<double>(s.rounding_bound);
+    const double a = to_double(Scalar(amplification * quotient));
+    const double bound = to_double(s.rounding_bound);
     if (trusted(s.rounding_bound)) return;
     std::ostringstream text;
     text.precision(2);

@@ -18,10 +18,31 @@ struct SinCos {
 // give exact 0 and +-1 (cos(pi/2) in floating point is 6e-17, which would invent a vertical sliding
 // velocity in every level, right-angle case).
 template <typename Scalar>
+struct DegreeConstants {
+  Scalar quarter{90}, half = ratio<Scalar>(1, 2), fourth = ratio<Scalar>(1, 4);
+};
+template <typename Scalar>
+struct RadianConstants {
+  Scalar pi_ = pi<Scalar>(), straight{180};
+};
+
+// Built once per type: at 100 digits each construction is an MPFR call and 1/2 a division. A dual
+// builds them each time: Eigen's AutoDiffScalar resizes a constant's empty derivatives in place, so
+// a kept one would carry one sensitivity's number of inputs into the next.
+template <typename Constants, typename Scalar>
+decltype(auto) constants() {
+  if constexpr (is_dual_v<Scalar>) {
+    return Constants{};
+  } else {
+    static const Constants kept;
+    return (kept);
+  }
+}
+
+template <typename Scalar>
 SinCos<Scalar> sin_cos_deg(const Scalar& deg) {
-  // Built once: at 100 digits each construction is an MPFR call and 1/2 a division. turns / 4 as
-  // turns * 1/4 is the same number (a power of two).
-  static const Scalar quarter(90), half = ratio<Scalar>(1, 2), fourth = ratio<Scalar>(1, 4);
+  // turns / 4 as turns * 1/4 is the same number (a power of two).
+  const auto& [quarter, half, fourth] = constants<DegreeConstants<Scalar>, Scalar>();
   Scalar turns = floor_of(Scalar(deg / quarter + half));
   Scalar rest = deg - turns * quarter;  // in [-45, 45]
   Scalar q = turns - Scalar(4) * floor_of(Scalar(turns * fourth));
@@ -29,9 +50,10 @@ SinCos<Scalar> sin_cos_deg(const Scalar& deg) {
   if constexpr (is_exact_v<Scalar>) {
     if (rest != Scalar(0)) throw Irrational("an angle that is not a multiple of 90 degrees (its sine and cosine)");
   } else {
-    static const Scalar pi_ = pi<Scalar>(), straight(180);
+    const auto& [pi_, straight] = constants<RadianConstants<Scalar>, Scalar>();
     const Scalar rad = rest * pi_ / straight;
-    if (rest != Scalar(0)) SinCosRadians<Scalar>::of(rad, s, c);
+    // A dual still needs the derivative at a multiple of 90 degrees (its value there is exact anyway).
+    if (rest != Scalar(0) || is_dual_v<Scalar>) SinCosRadians<Scalar>::of(rad, s, c);
   }
   // The quarter turn q by selection rather than branches (random angles would mispredict them):
   // odd q exchanges sine and cosine, q >= 2 negates the sine, q = 1 or 2 the cosine.

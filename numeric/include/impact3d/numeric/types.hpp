@@ -1,7 +1,9 @@
 // Fixed-size Eigen types and exact constants shared by every algorithm of impact3d::numeric.
 #pragma once
 
+#include <algorithm>
 #include <limits>
+#include <optional>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -22,10 +24,28 @@ Scalar ratio(long long p, long long q) {
   return Scalar(p) / Scalar(q);
 }
 
+// A scalar that carries first derivatives beside its value (numeric/autodiff.hpp specializes this for
+// its dual type): decisions and rounding bounds use the value alone, so the branch taken is the value's.
+template <typename Scalar>
+struct DualTraits {
+  static constexpr bool is_dual = false;
+  using Value = Scalar;
+  static const Scalar& value(const Scalar& x) { return x; }
+};
+template <typename Scalar>
+inline constexpr bool is_dual_v = DualTraits<Scalar>::is_dual;
+
 template <typename Scalar>
 Scalar pi() {
   static_assert(!std::numeric_limits<Scalar>::is_exact, "pi has no exact value");
-  return boost::math::constants::pi<Scalar>();
+  if constexpr (is_dual_v<Scalar>) return Scalar(pi<typename DualTraits<Scalar>::Value>());
+  else return boost::math::constants::pi<Scalar>();
+}
+
+// A scalar as a double, for messages and the rounding model's comparisons with double thresholds.
+template <typename Scalar>
+double to_double(const Scalar& x) {
+  return static_cast<double>(DualTraits<Scalar>::value(x));
 }
 
 template <typename Scalar>
@@ -41,11 +61,58 @@ struct PlaneAxes {
   Vec3<Scalar> w() const { return Vec3<Scalar>(Scalar(0), -s, c); }
 };
 
+// X = A^-1 B for a dual scalar: the values by `factor` (a factorization of A's values, or nothing where A
+// is singular), the derivatives by the same factorization, dX = A^-1 (dB - dA X). Eigen's triangular
+// solves skip a right-hand side whose value is zero, and with it that entry's derivatives.
+template <typename Scalar, int Cols, typename Factor>
+std::optional<Eigen::Matrix<Scalar, 3, Cols>> dual_solve(const Mat3<Scalar>& A, const Eigen::Matrix<Scalar, 3, Cols>& B,
+                                                          Factor&& factor) {
+  using V = typename DualTraits<Scalar>::Value;
+  Eigen::Index n = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) n = std::max(n, A(i, j).derivatives().size());
+    for (int j = 0; j < Cols; ++j) n = std::max(n, B(i, j).derivatives().size());
+  }
+  auto d = [](const Scalar& x, Eigen::Index k) { return x.derivatives().size() ? x.derivatives()[k] : V(0); };
+  Mat3<V> Av;
+  Eigen::Matrix<V, 3, Cols> Bv;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) Av(i, j) = A(i, j).value();
+    for (int j = 0; j < Cols; ++j) Bv(i, j) = B(i, j).value();
+  }
+  const auto f = factor(Av);
+  if (!f) return std::nullopt;
+  const Eigen::Matrix<V, 3, Cols> X = f->solve(Bv);
+  Eigen::Matrix<Scalar, 3, Cols> out;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < Cols; ++j) out(i, j) = Scalar(X(i, j), Eigen::Matrix<V, Eigen::Dynamic, 1>::Zero(n));
+  for (Eigen::Index k = 0; k < n; ++k) {
+    Eigen::Matrix<V, 3, Cols> R;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < Cols; ++j) {
+        V r = d(B(i, j), k);
+        for (int m = 0; m < 3; ++m) r -= d(A(i, m), k) * X(m, j);
+        R(i, j) = r;
+      }
+    const Eigen::Matrix<V, 3, Cols> dX = f->solve(R);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < Cols; ++j) out(i, j).derivatives()[k] = dX(i, j);
+  }
+  return out;
+}
+
 // x = J^-1 b for a symmetric positive definite J: Cholesky for floating types, LU for exact ones.
 template <typename Scalar, typename Rhs>
 auto spd_solve(const Eigen::Matrix<Scalar, 3, 3>& J, const Rhs& b) {
-  if constexpr (std::numeric_limits<Scalar>::is_exact) return J.fullPivLu().solve(b).eval();
-  else return J.llt().solve(b).eval();
+  if constexpr (std::numeric_limits<Scalar>::is_exact) {
+    return J.fullPivLu().solve(b).eval();
+  } else if constexpr (is_dual_v<Scalar>) {
+    using V = typename DualTraits<Scalar>::Value;
+    const Eigen::Matrix<Scalar, 3, Rhs::ColsAtCompileTime> B = b;
+    return *dual_solve(J, B, [](const Mat3<V>& M) { return std::optional<Eigen::LLT<Mat3<V>>>(M.llt()); });
+  } else {
+    return J.llt().solve(b).eval();
+  }
 }
 
 // [r]x: the matrix with skew(r) * p == r x p.

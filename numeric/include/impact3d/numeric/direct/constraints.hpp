@@ -58,9 +58,19 @@ std::optional<Vec3<Scalar>> solve_rows(const std::array<Row<Scalar>, 3>& rows) {
     A.row(k) = rows[k].c.transpose();
     b(k) = rows[k].rhs;
   }
-  Eigen::FullPivLU<Mat3<Scalar>> lu(A);
-  if (!lu.isInvertible()) return std::nullopt;
-  return Vec3<Scalar>(lu.solve(b));
+  if constexpr (is_dual_v<Scalar>) {
+    using V = typename DualTraits<Scalar>::Value;
+    const auto X = dual_solve(A, Eigen::Matrix<Scalar, 3, 1>(b), [](const Mat3<V>& M) {
+      Eigen::FullPivLU<Mat3<V>> lu(M);
+      return lu.isInvertible() ? std::optional<Eigen::FullPivLU<Mat3<V>>>(lu) : std::nullopt;
+    });
+    if (!X) return std::nullopt;
+    return Vec3<Scalar>(*X);
+  } else {
+    Eigen::FullPivLU<Mat3<Scalar>> lu(A);
+    if (!lu.isInvertible()) return std::nullopt;
+    return Vec3<Scalar>(lu.solve(b));
+  }
 }
 
 // The ratio u.P / P_n at which sliding along u stops, on the plane (n, u): eq 19 (CIR) for the case's

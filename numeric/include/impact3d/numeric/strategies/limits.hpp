@@ -75,8 +75,8 @@ void flag_if_undecided(ImpulseSolution<Scalar>& out, const Problem<Scalar>& p, c
       out.warn(WarningCode::undecided, [&] {
         std::ostringstream text;
         text.precision(3);
-        text << "undecided: mu = " << static_cast<double>(mu) << " lies within the rounding bound ("
-             << static_cast<double>(bound(p.amplification)) << ") of " << name << " = " << static_cast<double>(limit)
+        text << "undecided: mu = " << to_double(mu) << " lies within the rounding bound ("
+             << to_double(bound(p.amplification)) << ") of " << name << " = " << to_double(limit)
              << "; a wider precision may take the other regime";
         return text.str();
       });

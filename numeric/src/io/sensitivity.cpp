@@ -1,0 +1,123 @@
+// Sensitivities by forward-mode automatic differentiation (sensitivity.hpp). The case is first solved
+// at double exactly as `solve` solves it, so that every refusal is solve's; then once more on dual
+// numbers seeded at the case's inputs (to_scene.hpp, DualSeeds).
+#include "impact3d/io/sensitivity.hpp"
+
+#include <cmath>
+#include <limits>
+#include <variant>
+
+#include "impact3d/io/case_numbers.hpp"
+#include "impact3d/io/result_numbers.hpp"
+#include "impact3d/io/scalar_text.hpp"
+#include "impact3d/io/to_scene.hpp"
+#include "impact3d/numeric/analysis.hpp"
+#include "impact3d/numeric/autodiff.hpp"
+
+namespace impact3d {
+template Analysis<Dual> analyze(const Scene<Dual>&, const std::vector<Strategy<Dual>>&, Engine);
+}  // namespace impact3d
+
+namespace impact3d::io {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// d x / d input j, 0 where x carries no derivatives (a constant).
+double derivative_of(const Dual& x, std::size_t j) {
+  const auto& d = x.derivatives();
+  return static_cast<Eigen::Index>(j) < d.size() ? d[static_cast<Eigen::Index>(j)] : 0.0;
+}
+
+class SeedScope {
+ public:
+  explicit SeedScope(const DualSeeds& s) { dual_seeds = &s; }
+  ~SeedScope() { dual_seeds = nullptr; }
+  SeedScope(const SeedScope&) = delete;
+  SeedScope& operator=(const SeedScope&) = delete;
+};
+
+// The deciding quantity of a strategy's regime, limit - mu, with its name; none for brach.
+std::optional<std::pair<std::string, Dual>> margin(const Strategy<Dual>& st, const ImpulseSolution<Dual>& imp) {
+  if (const auto* pc = std::get_if<PcCrash<Dual>>(&st))
+    if (imp.gir) return std::pair<std::string, Dual>{"gir - mu", Dual(*imp.gir - pc->mu)};
+  if (const auto* w = std::get_if<Wach<Dual>>(&st)) {
+    const bool cir = w->limit == WachLimit::cir;
+    const auto& limit = cir ? imp.cir : imp.gir;
+    if (limit) return std::pair<std::string, Dual>{cir ? "cir - mu" : "gir - mu", Dual(*limit - w->mu)};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+double elasticity(double derivative, double input, double output) {
+  if (input == 0 || output == 0 || !std::isfinite(output)) return kNaN;
+  return derivative * input / output;
+}
+
+SensitivityRun sensitivity(const std::string& case_text, const SensitivityOptions& o) {
+  return sensitivity(read_case(case_text), o);
+}
+
+SensitivityRun sensitivity(CaseSpec spec, const SensitivityOptions& o) {
+  if (!o.strategies.empty()) spec.strategies = o.strategies;
+  try {
+    (void)analyze(to_scene<double>(spec), to_strategies<double>(spec), o.engine);
+  } catch (const SolveError& e) {
+    throw no_solution(spec, e);
+  }
+
+  SensitivityRun run;
+  run.units = spec.units;
+  run.engine = o.engine;
+  CaseInputs in = case_inputs(spec);
+  run.fixed = in.fixed;
+  DualSeeds seeds;
+  seeds.size = static_cast<int>(in.inputs.size());
+  for (std::size_t j = 0; j < in.inputs.size(); ++j) {
+    run.inputs.push_back(in.inputs[j].path);
+    run.input_values.push_back(scalar_from_text<double>(in.inputs[j].numbers.front()->text));
+    for (const Number* n : in.inputs[j].numbers) seeds.index.emplace_back(n, static_cast<int>(j));
+  }
+  Scene<Dual> scene;
+  std::vector<Strategy<Dual>> strategies;
+  {
+    const SeedScope scope(seeds);
+    scene = to_scene<Dual>(spec);
+    strategies = to_strategies<Dual>(spec);
+  }
+  const Analysis<Dual> a = analyze(scene, strategies, o.engine);
+  const UnitFactors<Dual> f = unit_factors<Dual>(spec.units);
+  const std::size_t outputs = monte_carlo_outputs().size(), inputs = run.inputs.size();
+  std::vector<Dual> v(outputs);
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) {
+    const Solution<Dual>& sol = a.solutions[k];
+    SensitivityResult r;
+    r.strategy = spec.strategies[k];
+    r.regime = regime_name(sol.impulse.regime);
+    r.written.assign(outputs, 0);
+    numbers_of_solution(sol, f, v.data(), r.written.data());
+    r.values.resize(outputs);
+    r.derivatives.assign(outputs * inputs, kNaN);
+    for (std::size_t c = 0; c < outputs; ++c) {
+      r.values[c] = r.written[c] ? v[c].value() : kNaN;
+      if (!r.written[c] || !std::isfinite(v[c].value())) continue;
+      for (std::size_t j = 0; j < inputs; ++j) r.derivatives[c * inputs + j] = derivative_of(v[c], j);
+    }
+    if (const auto m = margin(strategies[k], sol.impulse)) {
+      r.margin_of = m->first;
+      r.regime_margin = m->second.value();
+      for (std::size_t j = 0; j < inputs; ++j) r.margin_derivatives.push_back(derivative_of(m->second, j));
+    }
+    WarningSet codes = 0;
+    for (const auto& w : sol.warnings) codes |= warning_bit(w.code);
+    for (std::size_t w = 0; w < kWarningNames.size(); ++w)
+      if (has_warning(codes, static_cast<WarningCode>(w))) r.warnings.emplace_back(kWarningNames[w]);
+    run.results.push_back(std::move(r));
+  }
+  return run;
+}
+
+}  // namespace impact3d::io
