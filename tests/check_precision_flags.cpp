@@ -5,6 +5,12 @@
 // infinity without a warning is check_extreme_input.cpp; the named tensor is exam_precision_flags.cpp.)
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <random>
+#include <thread>
+#include <utility>
+#include <vector>
+
 #include <fmt/format.h>
 
 #include "impact3d/io/read_case.hpp"
@@ -117,3 +123,38 @@ TEST_CASE("unflagged results hold their rounding bound on ill-conditioned collis
   }
 }
 
+
+TEST_CASE("the kept inertia conditions are each tensor's own, in any order and on any thread", "[precision]") {
+  // rounding::inertia_condition keeps two tensors' conditions per thread: a third tensor, or a tensor
+  // that differs in one bit, must never get another's.
+  std::mt19937_64 g(77);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Mat3<double>> tensors;
+  for (int k = 0; k < 4; ++k) {
+    Mat3<double> A;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) A(i, j) = u(g);
+    tensors.push_back(A * A.transpose() + Mat3<double>::Identity() * std::pow(10.0, -3 * k));
+  }
+  tensors.push_back(tensors[0]);
+  tensors.back()(2, 2) *= 1.001;  // close to the first, with another condition
+  REQUIRE(rounding::spd_condition(tensors[0]) != rounding::spd_condition(tensors[4]));
+  std::uniform_int_distribution<std::size_t> pick(0, tensors.size() - 1);
+  std::vector<std::size_t> order(2000);
+  for (auto& o : order) o = pick(g);
+  auto run = [&] {
+    int wrong = 0, checked = 0;
+    for (std::size_t o : order) {
+      wrong += rounding::inertia_condition(tensors[o]) != rounding::spd_condition(tensors[o]);
+      ++checked;
+    }
+    return std::pair{wrong, checked};
+  };
+  std::pair<int, int> other;
+  std::thread t([&] { other = run(); });
+  const auto own = run();
+  t.join();
+  CHECK(own.first == 0);
+  CHECK(other.first == 0);
+  CHECK(own.second + other.second == 4000);
+}

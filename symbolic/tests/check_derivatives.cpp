@@ -39,7 +39,8 @@ struct Draw {
 double to_double(const ex& e) { return ex_to<numeric>(evalf(e)).to_double(); }
 
 Dual seeded(double value, int index) {
-  Dual x(value, Eigen::VectorXd::Zero(kInputs));
+  static_assert(kInputs <= impact3d::kDualWidth);
+  Dual x(value, Dual::DerType::Zero());
   if (index >= 0) x.derivatives()[index] = 1;
   return x;
 }

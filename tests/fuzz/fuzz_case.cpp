@@ -1,11 +1,17 @@
 // libFuzzer harness: any bytes as a case file, read and, when valid, solved at every precision and
 // written as the result document, and differentiated (`sensitivity`) and written; the reader must
-// reject or the solve must finish, never crash or hang.
+// reject or the solve must finish, never crash or hang. Every number's value must be its text
+// correctly rounded, since the double engine reads the value (to_scene.hpp) and the others the text.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <string>
 
+#include "impact3d/io/case_numbers.hpp"
 #include "impact3d/io/read_case.hpp"
+#include "impact3d/io/scalar_text.hpp"
 #include "impact3d/io/sensitivity.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
@@ -33,6 +39,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const io::CaseError&) {
     return 0;
   }
+  for (const auto& input : io::case_inputs(spec).inputs)
+    for (const io::Number* n : input.numbers) {
+      const double x = io::scalar_from_text<double>(n->text);
+      if (std::memcmp(&x, &n->value, sizeof x) != 0 && !(std::isnan(x) && std::isnan(n->value))) std::abort();
+    }
   for (Engine engine : {Engine::generated, Engine::direct}) {
     solve_at<double>(spec, engine);
     solve_at<long double>(spec, engine);

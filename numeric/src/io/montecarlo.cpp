@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include <fmt/format.h>
@@ -175,7 +176,7 @@ class Worker {
     sampler_.draw(i, values_.data());
     if (o_.keep_samples) std::copy(values_.begin(), values_.end(), run_.inputs_of.begin() + static_cast<std::ptrdiff_t>(i * values_.size()));
     const bool direct = write_direct();
-    CaseSpec read;
+    std::optional<CaseSpec> read;
     if (!direct) {
       try {
         read = variants_.with(values_.data());
@@ -183,9 +184,9 @@ class Worker {
         for (std::size_t k = 0; k < tally_.size(); ++k) reject(i, k, e);
         return;
       }
-      if (!o_.strategies.empty()) read.strategies = o_.strategies;
+      if (!o_.strategies.empty()) read->strategies = o_.strategies;
     }
-    const CaseSpec& spec = direct ? spec_ : read;
+    const CaseSpec& spec = direct ? spec_ : *read;
     try {
       solve(i, spec, 0, tally_.size());
     } catch (const SolveError& e) {
@@ -217,15 +218,17 @@ class Worker {
  private:
   // The sample written into spec_, as the reader would have read it from its 17-digit text; false
   // where the reader must decide: no slots, or a value beyond the magnitudes the probes covered or
-  // below the case's smallest magnitude.
+  // below the case's smallest magnitude. At double the text is not written: the double engine reads
+  // the value (to_scene.hpp), and nothing on the double route reads a sampled number's text.
   bool write_direct() {
     if (slots_.empty()) return false;
     for (double v : values_)
       if (!std::isfinite(v) || (v != 0 && (std::fabs(v) < 1e-99 || std::fabs(v) > kFar))) return false;
+    const bool text = o_.precision != "double";
     char buf[32];
     for (std::size_t j = 0; j < slots_.size(); ++j) {
       slots_[j]->value = values_[j];
-      slots_[j]->text.assign(buf, format_g17(buf, values_[j]));
+      if (text) slots_[j]->text.assign(buf, format_g17(buf, values_[j]));
     }
     return true;
   }

@@ -3,6 +3,7 @@
 // numbers seeded at the case's inputs (to_scene.hpp, DualSeeds).
 #include "impact3d/io/sensitivity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <variant>
@@ -23,12 +24,6 @@ namespace impact3d::io {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// d x / d input j, 0 where x carries no derivatives (a constant).
-double derivative_of(const Dual& x, std::size_t j) {
-  const auto& d = x.derivatives();
-  return static_cast<Eigen::Index>(j) < d.size() ? d[static_cast<Eigen::Index>(j)] : 0.0;
-}
 
 class SeedScope {
  public:
@@ -75,47 +70,61 @@ SensitivityRun sensitivity(CaseSpec spec, const SensitivityOptions& o) {
   CaseInputs in = case_inputs(spec);
   run.fixed = in.fixed;
   DualSeeds seeds;
-  seeds.size = static_cast<int>(in.inputs.size());
   for (std::size_t j = 0; j < in.inputs.size(); ++j) {
     run.inputs.push_back(in.inputs[j].path);
     run.input_values.push_back(scalar_from_text<double>(in.inputs[j].numbers.front()->text));
     for (const Number* n : in.inputs[j].numbers) seeds.index.emplace_back(n, static_cast<int>(j));
   }
-  Scene<Dual> scene;
-  std::vector<Strategy<Dual>> strategies;
-  {
-    const SeedScope scope(seeds);
-    scene = to_scene<Dual>(spec);
-    strategies = to_strategies<Dual>(spec);
-  }
-  const Analysis<Dual> a = analyze(scene, strategies, o.engine);
-  const UnitFactors<Dual> f = unit_factors<Dual>(spec.units);
   const std::size_t outputs = monte_carlo_outputs().size(), inputs = run.inputs.size();
-  std::vector<Dual> v(outputs);
-  for (std::size_t k = 0; k < a.solutions.size(); ++k) {
-    const Solution<Dual>& sol = a.solutions[k];
+  for (const StrategySpec& st : spec.strategies) {
     SensitivityResult r;
-    r.strategy = spec.strategies[k];
-    r.regime = regime_name(sol.impulse.regime);
-    r.written.assign(outputs, 0);
-    numbers_of_solution(sol, f, v.data(), r.written.data());
-    r.values.resize(outputs);
+    r.strategy = st;
     r.derivatives.assign(outputs * inputs, kNaN);
-    for (std::size_t c = 0; c < outputs; ++c) {
-      r.values[c] = r.written[c] ? v[c].value() : kNaN;
-      if (!r.written[c] || !std::isfinite(v[c].value())) continue;
-      for (std::size_t j = 0; j < inputs; ++j) r.derivatives[c * inputs + j] = derivative_of(v[c], j);
-    }
-    if (const auto m = margin(strategies[k], sol.impulse)) {
-      r.margin_of = m->first;
-      r.regime_margin = m->second.value();
-      for (std::size_t j = 0; j < inputs; ++j) r.margin_derivatives.push_back(derivative_of(m->second, j));
-    }
-    WarningSet codes = 0;
-    for (const auto& w : sol.warnings) codes |= warning_bit(w.code);
-    for (std::size_t w = 0; w < kWarningNames.size(); ++w)
-      if (has_warning(codes, static_cast<WarningCode>(w))) r.warnings.emplace_back(kWarningNames[w]);
     run.results.push_back(std::move(r));
+  }
+  // kDualWidth inputs a pass; the values, regimes and warnings are each pass's alike (the derivatives
+  // never steer a branch), and are taken from the first.
+  std::vector<Dual> v(outputs);
+  for (std::size_t first = 0; first == 0 || first < inputs; first += kDualWidth) {
+    seeds.first = static_cast<int>(first);
+    const std::size_t width = std::min<std::size_t>(kDualWidth, inputs - first);
+    Scene<Dual> scene;
+    std::vector<Strategy<Dual>> strategies;
+    {
+      const SeedScope scope(seeds);
+      scene = to_scene<Dual>(spec);
+      strategies = to_strategies<Dual>(spec);
+    }
+    const Analysis<Dual> a = analyze(scene, strategies, o.engine);
+    const UnitFactors<Dual> f = unit_factors<Dual>(spec.units);
+    for (std::size_t k = 0; k < a.solutions.size(); ++k) {
+      const Solution<Dual>& sol = a.solutions[k];
+      SensitivityResult& r = run.results[k];
+      std::vector<char> written(outputs, 0);
+      numbers_of_solution(sol, f, v.data(), written.data());
+      const auto m = margin(strategies[k], sol.impulse);
+      if (first == 0) {
+        r.regime = regime_name(sol.impulse.regime);
+        r.written = written;
+        r.values.resize(outputs);
+        for (std::size_t c = 0; c < outputs; ++c) r.values[c] = written[c] ? v[c].value() : kNaN;
+        if (m) {
+          r.margin_of = m->first;
+          r.regime_margin = m->second.value();
+          r.margin_derivatives.assign(inputs, kNaN);
+        }
+        WarningSet codes = 0;
+        for (const auto& w : sol.warnings) codes |= warning_bit(w.code);
+        for (std::size_t w = 0; w < kWarningNames.size(); ++w)
+          if (has_warning(codes, static_cast<WarningCode>(w))) r.warnings.emplace_back(kWarningNames[w]);
+      }
+      for (std::size_t c = 0; c < outputs; ++c) {
+        if (!r.written[c] || !std::isfinite(r.values[c])) continue;
+        for (std::size_t j = 0; j < width; ++j) r.derivatives[c * inputs + first + j] = v[c].derivatives()[static_cast<Eigen::Index>(j)];
+      }
+      if (m && !r.margin_derivatives.empty())
+        for (std::size_t j = 0; j < width; ++j) r.margin_derivatives[first + j] = m->second.derivatives()[static_cast<Eigen::Index>(j)];
+    }
   }
   return run;
 }

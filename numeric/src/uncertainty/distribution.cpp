@@ -16,23 +16,24 @@ constexpr struct {
               {Distribution::Kind::uniform, "uniform"},       {Distribution::Kind::triangular, "triangular"},
               {Distribution::Kind::lognormal, "lognormal"}, {Distribution::Kind::discrete, "discrete"}};
 
-double truncated_normal(const Distribution& d, double u) {
+}  // namespace
+
+TruncatedWindow truncated_window(const Distribution& d) {
   const double a = (d.min - d.mean) / d.sd, b = (d.max - d.mean) / d.sd;
+  // Both ends above the mean: upper tails, Q(a) >= Q(b), so nothing rounds near 1.
+  if (a >= 0) return {true, normal_upper_tail(a), normal_upper_tail(b)};
+  return {false, normal_cdf(a), normal_cdf(b)};
+}
+
+double truncated_normal(const Distribution& d, const TruncatedWindow& w, double u) {
   // The probability is kept inside the uniform draws' own range, [2^-53, 1 - 2^-53]: where an end's
   // probability rounds to 0 or 1 (an end beyond 8 sd), the quantile then stays finite.
   auto inside = [](double p) { return std::clamp(p, 0x1p-53, 1 - 0x1p-53); };
-  double z;
-  if (a >= 0) {
-    // Both ends above the mean: work with upper tails, Q(a) >= Q(b), so nothing rounds near 1.
-    const double qa = normal_upper_tail(a), qb = normal_upper_tail(b);
-    z = -normal_quantile(inside(qa - u * (qa - qb)));
-  } else {
-    const double pa = normal_cdf(a), pb = normal_cdf(b);
-    z = normal_quantile(inside(pa + u * (pb - pa)));
-  }
+  const double z = w.upper ? -normal_quantile(inside(w.a - u * (w.a - w.b))) : normal_quantile(inside(w.a + u * (w.b - w.a)));
   return std::clamp(d.mean + d.sd * z, d.min, d.max);
 }
 
+namespace {
 }  // namespace
 
 std::string_view kind_name(Distribution::Kind k) {
@@ -53,7 +54,7 @@ bool kind_of(std::string_view name, Distribution::Kind& k) {
 double quantile(const Distribution& d, double u) {
   switch (d.kind) {
     case Distribution::Kind::normal: return d.mean + d.sd * normal_quantile(u);
-    case Distribution::Kind::truncated_normal: return truncated_normal(d, u);
+    case Distribution::Kind::truncated_normal: return truncated_normal(d, truncated_window(d), u);
     case Distribution::Kind::uniform: return std::clamp(d.min + (d.max - d.min) * u, d.min, d.max);
     case Distribution::Kind::triangular: {
       const double width = d.max - d.min, left = d.mode - d.min, right = d.max - d.mode;

@@ -29,6 +29,8 @@ std::size_t cholesky(std::vector<double>& c, std::size_t n) {
 
 Sampler::Sampler(std::vector<Distribution> inputs, const std::vector<Correlation>& correlations, std::uint64_t seed)
     : inputs_(std::move(inputs)), seed_(seed) {
+  for (const Distribution& d : inputs_)
+    windows_.push_back(d.kind == Distribution::Kind::truncated_normal ? truncated_window(d) : TruncatedWindow{});
   for (const Correlation& c : correlations) {
     if (c.a >= inputs_.size() || c.b >= inputs_.size() || c.a == c.b) throw std::invalid_argument("a correlation names no pair of inputs");
     correlated_.push_back(c.a);
@@ -47,6 +49,11 @@ Sampler::Sampler(std::vector<Distribution> inputs, const std::vector<Correlation
     L_[i * n + j] = L_[j * n + i] = c.rho;
   }
   if (const std::size_t k = cholesky(L_, n); k < n) throw NotPositiveDefinite(correlated_[k]);
+}
+
+double Sampler::value(std::size_t i, double u) const {
+  const Distribution& d = inputs_[i];
+  return d.kind == Distribution::Kind::truncated_normal ? truncated_normal(d, windows_[i], u) : quantile(d, u);
 }
 
 void Sampler::draw(std::uint64_t sample, double* values) const {
@@ -72,10 +79,10 @@ void Sampler::draw(std::uint64_t sample, double* values) const {
       else if (d.kind == Distribution::Kind::lognormal) values[i] = d.median * portable_exp(d.sigma * score);
       else {
         const double u = normal_cdf(score);
-        values[i] = quantile(d, std::clamp(u, 0x1p-53, 1 - 0x1p-53));
+        values[i] = value(i, std::clamp(u, 0x1p-53, 1 - 0x1p-53));
       }
     } else {
-      values[i] = quantile(d, uniform_open(seed_, sample, static_cast<std::uint32_t>(i)));
+      values[i] = value(i, uniform_open(seed_, sample, static_cast<std::uint32_t>(i)));
     }
   }
 }

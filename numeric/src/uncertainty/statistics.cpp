@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 namespace impact3d::uncertainty {
@@ -86,6 +87,65 @@ void select_positions(double* first, double* last, const std::size_t* kb, const 
   }
 }
 
+// The order statistics at the sorted, distinct positions [kb, ke) of the n values at x (finite), into
+// out[0 .. ke - kb); x is left as it was. Where there are many values they are first counted into bins
+// of equal width between their min and max: a value's bin is a non-decreasing function of the value,
+// so bin b holds the order statistics from the count below it on, and only the bins holding a wanted
+// position are gathered and selected in (again by bins, where one bin still holds most of them). The
+// values chosen are the order statistics themselves, so the result is select_positions' exactly, at
+// about three passes over the values instead of log2 of the positions.
+void order_statistics(const double* x, std::size_t n, const std::size_t* kb, const std::size_t* ke, double* out,
+                      int depth = 0) {
+  constexpr std::size_t kBins = 4096, kFew = 4096;
+  constexpr int kDepth = 3;
+  if (kb == ke) return;
+  const auto [lo_it, hi_it] = std::minmax_element(x, x + n);
+  const double lo = *lo_it, hi = *hi_it;
+  const double scale = static_cast<double>(kBins) / (hi - lo);
+  if (n <= kFew || depth >= kDepth || lo == hi || !std::isfinite(scale) || !(scale > 0)) {
+    if (lo == hi) {
+      std::fill(out, out + (ke - kb), lo);
+      return;
+    }
+    std::vector<double> work(x, x + n);
+    select_positions(work.data(), work.data() + n, kb, ke, 0);
+    for (const std::size_t* k = kb; k != ke; ++k) out[k - kb] = work[*k];
+    return;
+  }
+  auto bin = [&](double v) { return std::min(kBins - 1, static_cast<std::size_t>((v - lo) * scale)); };
+  std::vector<std::uint16_t> of(n);
+  std::vector<std::size_t> start(kBins + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) ++start[(of[i] = static_cast<std::uint16_t>(bin(x[i]))) + 1];
+  for (std::size_t b = 0; b < kBins; ++b) start[b + 1] += start[b];
+  // The wanted bins, each with its run of positions, and where its values go in `gathered`.
+  struct Wanted {
+    std::size_t bin, at;
+    const std::size_t *kb, *ke;
+  };
+  std::vector<Wanted> wanted;
+  std::vector<std::size_t> place(kBins, SIZE_MAX);
+  std::size_t total = 0;
+  for (const std::size_t* k = kb; k != ke;) {
+    const std::size_t b = static_cast<std::size_t>(std::upper_bound(start.begin(), start.end(), *k) - start.begin()) - 1;
+    const std::size_t* e = k;
+    while (e != ke && *e < start[b + 1]) ++e;
+    wanted.push_back({b, total, k, e});
+    place[b] = total;
+    total += start[b + 1] - start[b];
+    k = e;
+  }
+  std::vector<double> gathered(total);
+  for (std::size_t i = 0; i < n; ++i)
+    if (place[of[i]] != SIZE_MAX) gathered[place[of[i]]++] = x[i];
+  std::vector<std::size_t> local;
+  for (const Wanted& w : wanted) {
+    const std::size_t count = start[w.bin + 1] - start[w.bin];
+    local.assign(w.kb, w.ke);
+    for (std::size_t& k : local) k -= start[w.bin];
+    order_statistics(gathered.data() + w.at, count, local.data(), local.data() + local.size(), out + (w.kb - kb), depth + 1);
+  }
+}
+
 // Into (-180, 180]: x is in (-540, 540], so one step of 360 at most.
 double wrap_deg(double x) {
   if (x > 180) return x - 360;
@@ -116,7 +176,10 @@ Summary summarize(std::vector<double>& values) {
     positions(values.size(), r.p[k], at), positions(values.size(), r.lo[k], at), positions(values.size(), r.hi[k], at);
   std::sort(at.begin(), at.end());
   at.erase(std::unique(at.begin(), at.end()), at.end());
-  select_positions(values.data(), values.data() + values.size(), at.data(), at.data() + at.size(), 0);
+  // The order statistics written at their own positions: all that percentiles() reads.
+  std::vector<double> stats(at.size());
+  order_statistics(values.data(), values.size(), at.data(), at.data() + at.size(), stats.data());
+  for (std::size_t j = 0; j < at.size(); ++j) values[at[j]] = stats[j];
   s.min = values.front();
   s.max = values.back();
   percentiles(values, r, s);

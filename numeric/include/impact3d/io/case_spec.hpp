@@ -26,7 +26,7 @@ struct CaseError : std::runtime_error {
 
 struct Number {
   std::string text;  // the literal as written in the file
-  double value;      // the literal correctly rounded: for validation and messages only
+  double value;      // the literal correctly rounded to double: the double engine's input (to_scene), validation, messages
 };
 
 using Vector3 = std::array<Number, 3>;

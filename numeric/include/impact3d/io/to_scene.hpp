@@ -19,10 +19,11 @@
 namespace impact3d::io {
 
 // The numbers of a case a conversion to a dual type seeds (sensitivity.cpp sets it around one
-// conversion): each gets derivative 1 in its own entry of `size`; every other number derivative 0.
+// conversion): the number of input j, for j in [first, first + the dual's width), gets derivative 1 in
+// entry j - first; every other number derivative 0.
 struct DualSeeds {
   std::vector<std::pair<const Number*, int>> index;
-  int size = 0;
+  int first = 0;
 };
 inline thread_local const DualSeeds* dual_seeds = nullptr;
 
@@ -30,11 +31,14 @@ template <typename Scalar>
 Scalar to_scalar(const Number& n) {
   if constexpr (is_dual_v<Scalar>) {
     Scalar x(scalar_from_text<typename DualTraits<Scalar>::Value>(n.text));
+    x.derivatives().setZero();
     if (!dual_seeds) return x;
-    x.derivatives().setZero(dual_seeds->size);
-    for (const auto& [number, i] : dual_seeds->index)
-      if (number == &n) x.derivatives()[i] = 1;
+    for (const auto& [number, j] : dual_seeds->index)
+      if (number == &n && j >= dual_seeds->first && j - dual_seeds->first < x.derivatives().size())
+        x.derivatives()[j - dual_seeds->first] = 1;
     return x;
+  } else if constexpr (std::is_same_v<Scalar, double>) {
+    return n.value;  // the literal correctly rounded, as scalar_from_text<double> would give it
   } else {
     return scalar_from_text<Scalar>(n.text);
   }

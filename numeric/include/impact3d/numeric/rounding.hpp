@@ -25,9 +25,13 @@
 // A ratio carries its quotient's factor (1 + |V_cp / V_n|)(1 + |mu|) besides.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <optional>
 #include <string>
+#include <type_traits>
 
 #include <Eigen/Eigenvalues>
 
@@ -98,12 +102,35 @@ Scalar amplification_of(const Scene<Scalar>& s, const Scalar& V_rn, const Scalar
   }
 }
 
+// spd_condition of an inertia tensor. Many solves of one collision (a Monte Carlo run, a sweep) mostly
+// vary other inputs than the tensors: at double each thread keeps the last two tensors' conditions and
+// gives them again for a tensor identical bit for bit, which changes no result.
+template <typename Scalar>
+Scalar inertia_condition(const Mat3<Scalar>& J) {
+  if constexpr (std::is_same_v<Scalar, double>) {
+    struct Kept {
+      Mat3<double> J;
+      double condition;
+    };
+    thread_local std::array<std::optional<Kept>, 2> kept;
+    thread_local std::size_t next = 0;
+    for (const auto& k : kept)
+      if (k && std::memcmp(k->J.data(), J.data(), sizeof(double) * 9) == 0) return k->condition;
+    const double c = spd_condition(J);
+    kept[next] = Kept{J, c};
+    next ^= 1;
+    return c;
+  } else {
+    return spd_condition(J);
+  }
+}
+
 // The amplification A above; exact arithmetic has nothing to amplify.
 template <typename Scalar>
 Scalar amplification(const Scene<Scalar>& s, const Scalar& kappa_K) {
   using std::max;
   return amplification_of(s, Scalar(relative_velocity_C(s).x()), kappa_K,
-                          Scalar(max(spd_condition(s.body[0].J_B), spd_condition(s.body[1].J_B))));
+                          Scalar(max(inertia_condition(s.body[0].J_B), inertia_condition(s.body[1].J_B))));
 }
 
 // An upper bound of the amplification from spd_condition_bound, for the lean path, which has V_rn.

@@ -61,19 +61,15 @@ struct PlaneAxes {
   Vec3<Scalar> w() const { return Vec3<Scalar>(Scalar(0), -s, c); }
 };
 
-// X = A^-1 B for a dual scalar: the values by `factor` (a factorization of A's values, or nothing where A
-// is singular), the derivatives by the same factorization, dX = A^-1 (dB - dA X). Eigen's triangular
-// solves skip a right-hand side whose value is zero, and with it that entry's derivatives.
+// X = A^-1 B for a dual scalar (fixed-width derivatives, autodiff.hpp): the values by `factor` (a
+// factorization of A's values, or nothing where A is singular), the derivatives by the same
+// factorization, dX = A^-1 (dB - dA X). Eigen's triangular solves skip a right-hand side whose value is
+// zero, and with it that entry's derivatives.
 template <typename Scalar, int Cols, typename Factor>
 std::optional<Eigen::Matrix<Scalar, 3, Cols>> dual_solve(const Mat3<Scalar>& A, const Eigen::Matrix<Scalar, 3, Cols>& B,
                                                           Factor&& factor) {
   using V = typename DualTraits<Scalar>::Value;
-  Eigen::Index n = 0;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) n = std::max(n, A(i, j).derivatives().size());
-    for (int j = 0; j < Cols; ++j) n = std::max(n, B(i, j).derivatives().size());
-  }
-  auto d = [](const Scalar& x, Eigen::Index k) { return x.derivatives().size() ? x.derivatives()[k] : V(0); };
+  using D = typename Scalar::DerType;
   Mat3<V> Av;
   Eigen::Matrix<V, 3, Cols> Bv;
   for (int i = 0; i < 3; ++i) {
@@ -85,13 +81,13 @@ std::optional<Eigen::Matrix<Scalar, 3, Cols>> dual_solve(const Mat3<Scalar>& A, 
   const Eigen::Matrix<V, 3, Cols> X = f->solve(Bv);
   Eigen::Matrix<Scalar, 3, Cols> out;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < Cols; ++j) out(i, j) = Scalar(X(i, j), Eigen::Matrix<V, Eigen::Dynamic, 1>::Zero(n));
-  for (Eigen::Index k = 0; k < n; ++k) {
+    for (int j = 0; j < Cols; ++j) out(i, j) = Scalar(X(i, j), D::Zero());
+  for (Eigen::Index k = 0; k < D::RowsAtCompileTime; ++k) {
     Eigen::Matrix<V, 3, Cols> R;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < Cols; ++j) {
-        V r = d(B(i, j), k);
-        for (int m = 0; m < 3; ++m) r -= d(A(i, m), k) * X(m, j);
+        V r = B(i, j).derivatives()[k];
+        for (int m = 0; m < 3; ++m) r -= A(i, m).derivatives()[k] * X(m, j);
         R(i, j) = r;
       }
     const Eigen::Matrix<V, 3, Cols> dX = f->solve(R);

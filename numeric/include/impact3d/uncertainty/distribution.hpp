@@ -29,6 +29,17 @@ bool kind_of(std::string_view name, Distribution::Kind& k);
 // probability near 1 is formed; the result is clamped to [min, max] against rounding.
 double quantile(const Distribution& d, double u);
 
+// What a truncated normal's quantile inverts over: [Phi(a), Phi(b)] for the standardized ends a, b, or,
+// when the window is above the mean (upper), the upper tails [Q(a), Q(b)]. It depends on the
+// distribution alone, so a sampler computes it once; truncated_normal(d, truncated_window(d), u) is
+// quantile(d, u).
+struct TruncatedWindow {
+  bool upper;
+  double a, b;
+};
+TruncatedWindow truncated_window(const Distribution& d);
+double truncated_normal(const Distribution& d, const TruncatedWindow& w, double u);
+
 // The cumulative weights of a discrete distribution: running sums divided by the total, the last set
 // to exactly 1 so that every u < 1 finds a value.
 std::vector<double> cumulative_weights(const std::vector<double>& weights);

@@ -45,7 +45,10 @@ class Sampler {
   void draw(std::uint64_t sample, double* values) const;
 
  private:
+  double value(std::size_t input, double u) const;  // quantile(inputs_[input], u)
+
   std::vector<Distribution> inputs_;
+  std::vector<TruncatedWindow> windows_;  // per input; a truncated normal's, computed once
   std::vector<std::size_t> correlated_;  // the inputs in a correlation, in file order
   std::vector<double> L_;                // their Cholesky factor, row-major
   std::uint64_t seed_;

@@ -28,8 +28,8 @@ struct Summary {
 // the two positions it reads stand in place.
 double percentile_type7(const std::vector<double>& sorted, double p);
 
-// The values' summary (they are reordered in place: the order statistics it reads are selected, not
-// sorted; none may be NaN or infinite; empty gives count 0).
+// The values' summary (they are overwritten: the order statistics it reads are selected, not sorted;
+// none may be NaN or infinite; empty gives count 0).
 // A percentile's standard error is the quantile function's slope times the binomial standard error of
 // its probability: (Q(p + s) - Q(p - s)) / 2 with s = sqrt(p (1 - p) / n), the two probabilities kept
 // in [0, 1] (and the difference scaled to the width kept). It needs no density estimate and no
