@@ -185,7 +185,7 @@ Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::St
     return {rejected_row(row.line, fmt::format("$: larger than {} bytes, the limit for this input", io::limits::kCaseFileBytes), f),
             false};
   try {
-    io::CaseSpec spec = io::read_case(f.columns ? f.columns->case_json(row.text) : row.text);
+    io::CaseSpec spec = f.columns ? f.columns->case_spec(row.text) : io::read_case(row.text);
     if (!strategies.empty()) spec.strategies = strategies;
     try {
       return {answer(spec, o, row.line, f), true};

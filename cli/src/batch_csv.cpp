@@ -1,14 +1,18 @@
-// Case rows are turned into the JSON text of a case and read by the case reader, so that a CSV case is
-// checked exactly as a case file is and its errors name the same paths. Result rows are taken from the
+// Case rows are read by the case reader as the JSON text of a case would be, so that a CSV case is
+// checked exactly as a case file is and its errors name the same paths: from the reader's tree built
+// straight from the cells where the JSON reader's fast route would give that tree, from the text
+// otherwise. Result rows are taken from the
 // result document `solve` prints, so that every number is the same text.
 #include "batch_csv.hpp"
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 
 #include <fmt/format.h>
 
 #include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/decimal.hpp"
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/json_path.hpp"
 #include "impact3d/io/json_writer.hpp"
@@ -139,6 +143,103 @@ void emit(const Node& n, const std::vector<Cell>& cells, std::string& out) {
   }
 }
 
+// What the fast route of io::parse_json_tree does with case_json's text (io/json_tree.cpp, Walk), done
+// on the cells: the same values counted in the same order against the same limits, a number's literal
+// and value as that reader takes them. Whatever it would hand to the checking parser, this refuses.
+class TreeBuilder {
+ public:
+  explicit TreeBuilder(const std::vector<Cell>& cells) : cells_(cells) {}
+
+  // `out` may hold the last row's tree: its strings and vectors are written over, not made again.
+  bool value(const Node& n, JsonValue& out, std::size_t depth) {
+    ++values_;
+    if (values_ >= io::limits::kValues || depth + 1 >= static_cast<std::size_t>(io::limits::kDepth)) return false;
+    out.flag = false;
+    out.number = 0;
+    out.text.clear();
+    std::size_t count = 0;
+    bool ok = true;
+    switch (n.kind) {
+      case Node::Kind::leaf: ok = leaf(cells_[n.column], out); break;
+      case Node::Kind::object: {
+        out.type = JsonValue::Type::object;
+        for (std::size_t m = 0; ok && m < n.keys.size(); ++m) {
+          if (!any(n.members[m], cells_)) continue;
+          const std::string& key = n.keys[m];
+          if (count >= kScannedKeys || key.size() > io::limits::kKeyChars || !text_ok(key)) {
+            ok = false;
+            break;
+          }
+          if (count == out.keys.size()) out.keys.emplace_back(), out.items.emplace_back();
+          out.keys[count] = key;
+          ok = value(n.members[m], out.items[count++], depth + 1);
+        }
+        out.keys.resize(count);
+        break;
+      }
+      case Node::Kind::array: {
+        std::size_t size = n.elements.size();
+        while (size > 0 && !any(n.elements[size - 1], cells_)) --size;
+        out.type = JsonValue::Type::array;
+        out.keys.clear();
+        for (; ok && count < size; ++count) {
+          if (count == out.items.size()) out.items.emplace_back();
+          ok = value(n.elements[count], out.items[count], depth + 1);
+        }
+        break;
+      }
+    }
+    if (n.kind == Node::Kind::leaf) out.keys.clear();
+    out.items.resize(count);
+    return ok;
+  }
+
+ private:
+  static constexpr std::size_t kScannedKeys = 64;  // the fast reader scans for duplicates up to this many keys
+
+  static bool text_ok(std::string_view s) {
+    for (const char c : s)
+      if (static_cast<unsigned char>(c) >= 0x80) return io::valid_utf8(s);
+    return true;
+  }
+
+  static bool leaf(const Cell& c, JsonValue& out) {
+    if (c.text.empty()) {
+      out.type = JsonValue::Type::null;
+      return true;
+    }
+    if (c.quoted || !json_number(c.text)) {
+      if (!text_ok(c.text)) return false;
+      out.type = JsonValue::Type::string;
+      out.text = c.text;
+      return true;
+    }
+    std::string_view raw = c.text;
+    if (raw.size() > io::limits::kLiteralChars) return false;
+    const long e = io::written_exponent(raw);
+    if (e > io::limits::kExponent || e < -io::limits::kExponent) return false;
+    double x;
+    const auto r = std::from_chars(raw.data(), raw.data() + raw.size(), x);
+    if (r.ec != std::errc() || r.ptr != raw.data() + raw.size()) return false;
+    if (raw == "-0") raw = "0", x = 0;  // an integer as nlohmann reports it (json_tree.cpp)
+    out.type = JsonValue::Type::number;
+    out.text.assign(raw);
+    out.number = x;
+    return true;
+  }
+
+  const std::vector<Cell>& cells_;
+  std::size_t values_ = 0;
+};
+
+// Bytes case_json may write for `n`, its keys and punctuation, without its cells' texts.
+std::size_t keys_bound(const Node& n) {
+  std::size_t bytes = 16;
+  for (std::size_t m = 0; m < n.keys.size(); ++m) bytes += 6 * n.keys[m].size() + 16 + keys_bound(n.members[m]);
+  for (const auto& e : n.elements) bytes += 16 + keys_bound(e);
+  return bytes;
+}
+
 // A cell of the result CSV: numbers as the document writes them, strings quoted when they must be.
 void put_text(std::string& out, std::string_view s) {
   if (s.find_first_of(",\"\r\n") == std::string_view::npos && (s.empty() || (s.front() != ' ' && s.back() != ' '))) {
@@ -210,18 +311,27 @@ std::string strategy_text(const JsonValue* s) {
 }  // namespace
 
 std::string split(std::string_view line, std::vector<Cell>& cells) {
-  cells.clear();
+  // The cells' strings are kept from the last row and written over: no allocation a cell once warm.
+  std::size_t count = 0;
+  struct Trim {
+    std::vector<Cell>& cells;
+    std::size_t& count;
+    ~Trim() { cells.resize(count); }
+  } trim{cells, count};
   if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
   // As a JSON Lines row with one is refused; the byte would otherwise become a \u0000 escape.
   if (const auto nul = line.find('\0'); nul != std::string_view::npos) return fmt::format("a NUL byte at offset {}", nul);
   std::size_t i = 0;
   for (;;) {
-    Cell& cell = cells.emplace_back();
-    if (cells.size() > io::limits::kCsvColumns) return fmt::format("more than {} cells", io::limits::kCsvColumns);
+    if (count == io::limits::kCsvColumns) return fmt::format("more than {} cells", io::limits::kCsvColumns);
+    if (count == cells.size()) cells.emplace_back();
+    Cell& cell = cells[count++];
+    cell.text.clear();
+    cell.quoted = false;
     if (i < line.size() && line[i] == '"') {
       cell.quoted = true;
       for (++i;; ++i) {
-        if (i >= line.size()) return fmt::format("cell {}: a quote not closed on its line", cells.size());
+        if (i >= line.size()) return fmt::format("cell {}: a quote not closed on its line", count);
         if (line[i] == '"') {
           if (i + 1 < line.size() && line[i + 1] == '"') ++i;
           else break;
@@ -229,7 +339,7 @@ std::string split(std::string_view line, std::vector<Cell>& cells) {
         cell.text += line[i];
       }
       ++i;
-      if (i < line.size() && line[i] != ',') return fmt::format("cell {}: text after the closing quote", cells.size());
+      if (i < line.size() && line[i] != ',') return fmt::format("cell {}: text after the closing quote", count);
     } else {
       const std::size_t end = std::min(line.find(',', i), line.size());
       cell.text.assign(line.substr(i, end - i));
@@ -255,17 +365,41 @@ CaseColumns::CaseColumns(std::string_view header) {
   }
   check_dense(root_, "$");
   columns_ = cells.size();
+  keys_bound_ = keys_bound(root_);
+}
+
+void CaseColumns::cells_of(std::string_view line, std::vector<Cell>& cells) const {
+  if (const std::string problem = split(line, cells); !problem.empty()) throw io::CaseError("$", "not a CSV row: " + problem);
+  if (cells.size() != columns_)
+    throw io::CaseError("$", fmt::format("{} cells, but the header has {} columns", cells.size(), columns_));
 }
 
 std::string CaseColumns::case_json(std::string_view line) const {
   std::vector<Cell> cells;
-  if (const std::string problem = split(line, cells); !problem.empty()) throw io::CaseError("$", "not a CSV row: " + problem);
-  if (cells.size() != columns_)
-    throw io::CaseError("$", fmt::format("{} cells, but the header has {} columns", cells.size(), columns_));
+  cells_of(line, cells);
   std::string out;
   out.reserve(line.size() * 2 + 64);
   emit(root_, cells, out);
   return out;
+}
+
+bool CaseColumns::case_tree(const std::vector<Cell>& cells, io::JsonValue& out) const {
+  // The fast reader refuses a text above the case file's size; every cell escaped at most sixfold.
+  std::size_t bytes = keys_bound_;
+  for (const auto& c : cells) bytes += 6 * c.text.size() + 2;
+  if (bytes > io::limits::kCaseFileBytes) return false;
+  return TreeBuilder(cells).value(root_, out, 0);
+}
+
+io::CaseSpec CaseColumns::case_spec(std::string_view line) const {
+  thread_local std::vector<Cell> cells;
+  thread_local JsonValue tree;
+  cells_of(line, cells);
+  if (case_tree(cells, tree)) return io::read_case_tree(tree);
+  std::string text;
+  text.reserve(line.size() * 2 + 64);
+  emit(root_, cells, text);
+  return io::read_case(text);
 }
 
 std::string result_header() {

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "impact3d/io/case_spec.hpp"
 #include "impact3d/io/json_pick.hpp"
 #include "impact3d/io/json_tree.hpp"
 
@@ -31,6 +32,16 @@ class CaseColumns {
   // every other cell a string; an empty cell leaves its key out (null inside an array that has other
   // cells), and an object or array with no cell at all is left out. Throws io::CaseError at "$".
   std::string case_json(std::string_view line) const;
+  // The row's case read as case_json's text would be read, by the shorter route where it can be taken:
+  // the reader's tree built straight from the cells (case_tree). Throws io::CaseError.
+  io::CaseSpec case_spec(std::string_view line) const;
+  // The tree io::parse_json_tree(case_json(line)) gives, built from the row's cells without the text.
+  // False (`out` then unspecified) for a row that parser would not take on its fast route: a limit
+  // near, a string or key that is not valid UTF-8, a literal beyond a double's range. Those rows are
+  // read from the text, so that the checking parser alone words every problem.
+  bool case_tree(const std::vector<Cell>& cells, io::JsonValue& out) const;
+  // The row's cells, as many as the header has columns. Throws io::CaseError at "$".
+  void cells_of(std::string_view line, std::vector<Cell>& cells) const;
 
   struct Node {
     enum class Kind { leaf, object, array } kind = Kind::leaf;
@@ -43,6 +54,7 @@ class CaseColumns {
  private:
   Node root_;
   std::size_t columns_ = 0;
+  std::size_t keys_bound_ = 0;  // the JSON text's bytes from keys and punctuation, at most
 };
 
 // The result CSV: its header line, and the lines of one case (one per result of its document, `line`

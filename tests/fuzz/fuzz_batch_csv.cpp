@@ -1,17 +1,21 @@
 // libFuzzer harness: any bytes as a batch CSV (the first line its header, the others rows). A header
 // is refused or read; each row is refused or becomes JSON text, which for valid UTF-8 is valid JSON
-// within the reader's limits; never a crash, a hang or unbounded memory.
+// within the reader's limits; where the row's tree is built from its cells (case_tree), it is the
+// tree that text reads as, and the case reader gives the same answer from both; never a crash, a hang
+// or unbounded memory.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "../../cli/src/batch_csv.hpp"
 #include "impact3d/io/case_spec.hpp"
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/json_tree.hpp"
+#include "json_tree_equal.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace impact3d;
@@ -34,12 +38,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const io::CaseError&) {
       continue;
     }
+    std::vector<cli::csv::Cell> cells;
+    columns->cells_of(line, cells);  // case_json took the row: the same cells
+    io::JsonValue direct;
+    const bool built = columns->case_tree(cells, direct);
+    io::JsonValue tree;
     try {
-      (void)io::parse_json_tree(json);
-      (void)io::read_case(json);
+      tree = io::parse_json_tree(json);
     } catch (const io::CaseError& e) {
+      if (built) std::abort();  // the cells' tree where the text is refused
       if (io::valid_utf8(std::string(line)) && std::string_view(e.what()).rfind("invalid JSON", 0) == 0) std::abort();
+      continue;
     }
+    if (built && !io::json_tree_equal(direct, tree)) std::abort();
+    std::string from_text, from_row;
+    try {
+      (void)io::read_case_tree(tree);
+    } catch (const io::CaseError& e) {
+      from_text = e.line();
+    }
+    try {
+      (void)columns->case_spec(line);
+    } catch (const io::CaseError& e) {
+      from_row = e.line();
+    }
+    if (from_text != from_row) std::abort();
   }
   return 0;
 }

@@ -1,0 +1,144 @@
+// The CSV case rows' two routes to the case reader (cli/src/batch_csv.hpp): the tree built straight
+// from the cells (case_tree) against the text case_json writes read by io::parse_json_tree. Wherever
+// the cells' tree is built it is the text's tree, value for value and bit for bit, and the case reader
+// says the same of both; the rows it leaves to the text are those whose text the JSON reader's fast
+// route would leave to the checking parser. The same is fuzzed by tests/fuzz/fuzz_batch_csv.cpp.
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "../cli/src/batch_csv.hpp"
+#include "fuzz/json_tree_equal.hpp"
+#include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/json_tree.hpp"
+
+namespace {
+
+using namespace impact3d;
+using io::JsonValue;
+using cli::csv::Cell;
+using cli::csv::CaseColumns;
+
+// A case header with strings, numbers, nested arrays and an array of strategies rows may leave short.
+const char* const kHeader =
+    "name,units,restitution,vehicles[0].mass,vehicles[0].velocity[0],vehicles[0].velocity[1],vehicles[0].velocity[2],"
+    "vehicles[0].inertia[0][0],vehicles[0].inertia[0][1],vehicles[1].mass,contact.normal_yaw_deg,"
+    "strategy[0].name,strategy[0].mu,strategy[1].name,strategy[1].mu";
+
+std::string csv_cell(const std::string& text, bool quoted) {
+  if (!quoted) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + '"';
+}
+
+struct Routes {
+  bool built = false;  // the cells' tree was built
+  bool same = false;   // built: equal to the text's tree and read alike; not built: the text read
+};
+
+Routes routes(const CaseColumns& columns, const std::string& line) {
+  std::vector<Cell> cells;
+  columns.cells_of(line, cells);
+  static JsonValue direct;  // kept from row to row, as case_spec keeps it: the last row's tree is written over
+  Routes r;
+  r.built = columns.case_tree(cells, direct);
+  JsonValue tree;
+  try {
+    tree = io::parse_json_tree(columns.case_json(line));
+  } catch (const io::CaseError&) {
+    r.same = !r.built;  // a text the JSON reader refuses must not have had a tree built from its cells
+    return r;
+  }
+  if (r.built && !io::json_tree_equal(direct, tree)) return r;
+  std::string from_text, from_row;
+  try {
+    (void)io::read_case_tree(tree);
+  } catch (const io::CaseError& e) {
+    from_text = e.line();
+  }
+  try {
+    (void)columns.case_spec(line);
+  } catch (const io::CaseError& e) {
+    from_row = e.line();
+  }
+  r.same = from_text == from_row;
+  return r;
+}
+
+}  // namespace
+
+// Known rows, each built or left to the text for a reason the JSON reader's fast route has
+// (io/json_tree.cpp): a "-0" integer read as 0, literals beyond the limits or a double's range, text that
+// is not UTF-8.
+TEST_CASE("exam: rows built from their cells, and rows left to the text") {
+  const CaseColumns columns("a,b[0],b[1],c.d");
+  struct Known {
+    std::string line;
+    bool built;
+  };
+  const std::vector<Known> rows = {
+      {"1,2,3,x", true},
+      {"-0,-0.0,0e0,\"7\"", true},
+      {",,,", true},
+      {"1,,,", true},
+      {",,5,", true},
+      {"h\xC3\xA9,1,2,3", true},
+      {"\xFF,1,2,3", false},                           // not UTF-8
+      {"1e400,1,2,3", false},                          // beyond a double: the checker names it
+      {"1e-400,1,2,3", false},                         // below a double's least subnormal
+      {"1e1001,1,2,3", false},                         // an exponent beyond the limit
+      {std::string(257, '1') + ",1,2,3", false},       // a literal longer than the limit
+      {"4e-320,007,+1,.5", true},                      // a subnormal; the rest are not JSON numbers: strings
+  };
+  for (const auto& k : rows) {
+    INFO(k.line.substr(0, 40));
+    const Routes r = routes(columns, k.line);
+    CHECK(r.built == k.built);
+    CHECK(r.same);
+  }
+  std::vector<Cell> cells;
+  columns.cells_of("-0,1,2,3", cells);
+  JsonValue tree;
+  REQUIRE(columns.case_tree(cells, tree));
+  CHECK(tree.items[0].text == "0");  // as nlohmann reports the integer -0
+  CHECK(tree.items[0].number == 0.0);
+  CHECK(!std::signbit(tree.items[0].number));
+}
+
+// Seeded random rows from fragments that reach every branch: numbers of every form, strings that look
+// like numbers, quoted cells, empty cells inside arrays and whole strategies left out, bytes that are
+// not UTF-8, control characters, literals beyond the limits.
+TEST_CASE("check: the cells' tree is the text's tree on random rows") {
+  const CaseColumns columns(kHeader);
+  const std::vector<std::string> ordinary = {
+      "", "", "0", "-0", "-0.0", "12", "1.5e3", "-2.25E-2", "4e-320", "0." + std::string(30, '1'), "abc", "SI", "US",
+      "pc-crash", "h\xC3\xA9", "a\x01z", "007", "+1", ".5", "1.", "NaN", "-", "a\"b", "x,y", " 7 ", "\t8"};
+  const std::vector<std::string> refused = {"1e-400", "1e400", "1e1001", "1e-1001", std::string(300, '9'), "\xFF",
+                                            "\xED\xA0\x80"};
+  std::mt19937_64 rng(20261124);
+  const std::size_t width = 15;
+  long built = 0, left = 0, rows = 0;
+  for (int n = 0; n < 20000; ++n) {
+    std::string line;
+    for (std::size_t c = 0; c < width; ++c) {
+      // One cell in 40 from the refused: about one row in three then holds one.
+      const std::string& f = rng() % 40 == 0 ? refused[rng() % refused.size()] : ordinary[rng() % ordinary.size()];
+      const bool must_quote = f.find_first_of(",\"") != std::string::npos;
+      const bool quoted = must_quote || (rng() % 8 == 0);
+      line += (c ? "," : "") + csv_cell(f, quoted);
+    }
+    const Routes r = routes(columns, line);
+    INFO(line);
+    REQUIRE(r.same);
+    ++(r.built ? built : left);
+    ++rows;
+  }
+  CHECK(rows == 20000);
+  // Both routes taken many times: (39/40)^15 = 0.68 of the rows hold no refused cell.
+  CHECK(built > 10000);
+  CHECK(left > 4000);
+}
