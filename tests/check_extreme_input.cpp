@@ -57,7 +57,7 @@ TEST_CASE("extreme cases: no NaN or infinity without a warning, text and JSON ag
     std::size_t json_warnings = 0;
     for (const auto& r : doc["results"]) json_warnings += r["warnings"].size();
     std::size_t text_warnings = 0;
-    for (std::size_t p = 0; (p = text.out.find("  WARNING [", p)) != std::string::npos; ++p) ++text_warnings;
+    for (std::size_t p = 0; (p = text.out.find("\n  WARNING: ", p)) != std::string::npos; ++p) ++text_warnings;
     CHECK(json_warnings == text_warnings);
   }
   fs::remove_all(dir);

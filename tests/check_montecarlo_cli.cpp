@@ -70,9 +70,12 @@ TEST_CASE("the Figure 8 Monte Carlo: the contract's JSON, the same bytes at any 
     std::set<std::string> wanted;
     const json& result = reference["results"][k];
     for (const char* group : {"impulse", "sliding", "energy"}) numbers(result[group], group, wanted);
+    // The energy split's shares echo the case's input, not a computed number.
+    std::erase_if(wanted, [](const std::string& p) { return p.starts_with("energy.split."); });
     numbers(result["relative_velocity"]["after"], "relative_velocity.after", wanted);
     for (int v = 0; v < 2; ++v)
-      for (const char* key : {"velocity", "angular_velocity", "delta_v", "delta_v_magnitude", "pdof_deg"})
+      for (const char* key : {"velocity", "angular_velocity", "delta_v", "delta_v_magnitude", "pdof_deg", "delta_v_vehicle",
+                              "speed_after", "heading_after_deg", "yaw_rate_after", "deformation_energy", "ees"})
         numbers(result["vehicles"][v][key], fmt::format("vehicles[{}].{}", v, key), wanted);
     REQUIRE(wanted.size() >= 30);
     for (const auto& path : wanted) {

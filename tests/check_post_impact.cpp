@@ -23,7 +23,12 @@ TEST_CASE("swerve: the angle and the across-component of the final sliding", "[s
     CHECK(std::abs(*sol.swerve_speed - across) <= vtol);
     REQUIRE(sol.swerve_deg);
     const double deg_tol = 2 * vtol / sol.sliding_after * 180 / M_PI;
-    CHECK(std::abs(*sol.swerve_deg - std::atan2(across, along) * 180 / M_PI) <= deg_tol);
+    // The angle off the line of the initial sliding: a reversal along it is no swerve.
+    CHECK(std::abs(*sol.swerve_deg - std::atan2(across, std::abs(along)) * 180 / M_PI) <= deg_tol);
+    REQUIRE(sol.sliding_along);
+    CHECK(std::abs(*sol.sliding_along - along) <= vtol);
+    REQUIRE(sol.reversed);
+    if (std::abs(along) > 2 * vtol) CHECK(*sol.reversed == (along < 0));
     ++checked;
   }
   CHECK(checked == 200);  // nothing in the loop skips a case

@@ -195,12 +195,18 @@ TEST_CASE("a valid case exits 0 with output and nothing on stderr", "[bad-input]
 TEST_CASE("verify with nothing to verify fails instead of passing", "[bad-input]") {
   const fs::path empty = fs::temp_directory_path() / fmt::format("impact3d-empty-{}", ::getpid());
   fs::create_directories(empty);
-  for (const auto& args : std::vector<std::vector<std::string>>{{"verify"}, {"verify", empty.string()}}) {
-    const Run r = run_argv(args);
-    CHECK(r.status == 1);
-    CHECK(r.out.empty());
-    CHECK(r.err == "impact3d: error: verify: no cases to verify: name case files or directories holding them, or --random N\n");
-  }
+  // Nothing named: a usage error that says what to give.
+  const Run bare = run_argv({"verify"});
+  CHECK(bare.status == 2);
+  CHECK(bare.out.empty());
+  CHECK(bare.err ==
+        "impact3d: usage: verify: nothing to verify: give case files or directories (e.g. examples "
+        "verification/cases), or --random N (impact3d verify --help)\n");
+  // A directory with no cases in it: bad input.
+  const Run r = run_argv({"verify", empty.string()});
+  CHECK(r.status == 1);
+  CHECK(r.out.empty());
+  CHECK(r.err == "impact3d: error: verify: no cases to verify: name case files or directories holding them, or --random N\n");
   fs::remove_all(empty);
 }
 

@@ -172,11 +172,15 @@ std::string rejected_row(long line, const std::string& problem, const Formats& f
 
 // The result document as the output wants it: one JSON line with "line" first, or CSV rows.
 std::string answer(const io::CaseSpec& spec, const BatchOptions& o, long line, const Formats& f) {
-  if (!f.csv_out) return with_line(io::render(spec, o.precision, {"jsonl", 0, o.engine}), line);
+  io::RenderOptions ro;
+  ro.format = "jsonl";
+  ro.engine = o.engine;
+  if (!f.csv_out) return with_line(io::render(spec, o.precision, ro), line);
   // The cells are the document's text, taken as it is written; the rest of the document is not written.
   thread_local io::JsonPick pick = csv::result_pick();
   pick.clear();
-  const std::string doc = io::render(spec, o.precision, {"jsonl", 0, o.engine, &pick});
+  ro.pick = &pick;
+  const std::string doc = io::render(spec, o.precision, ro);
   return csv::result_rows(doc, pick, line);
 }
 

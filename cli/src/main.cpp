@@ -107,6 +107,11 @@ int main(int argc, char** argv) {
   solve_cmd->add_option("--engine", engine,
                         "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
       ->check(CLI::IsMember({"generated", "direct"}));
+  std::string units;
+  solve_cmd->add_option("--units", units,
+                        "units of the output, whatever the case's: SI, US (mph, lb, ft, deg/s) or metric-kmh (SI with "
+                        "km/h and deg/s); default the case's. The text report gives yaw rates in deg/s always")
+      ->check(CLI::IsMember({"SI", "US", "metric-kmh"}));
   auto* batch_cmd = app.add_subcommand("batch", "solve many cases, one JSON object per line (contract: many-cases.md)");
   impact3d::cli::BatchOptions bopt;
   std::string batch_engine = "generated";
@@ -178,7 +183,9 @@ int main(int argc, char** argv) {
   compare_cmd->add_flag("--subset", copt.subset, "compare only what the other results contain (cases, results, fields); reported as a subset");
   auto* verify_cmd = app.add_subcommand("verify", "every engine at every precision against the 100-digit solve");
   impact3d::verification::VerifyOptions vopt;
-  verify_cmd->add_option("inputs", vopt.inputs, "case files or directories (e.g. examples verification/cases)");
+  verify_cmd->add_option("inputs", vopt.inputs,
+                         "case files or directories of them (e.g. examples verification/cases); give these, --random "
+                         "N, or both");
   verify_cmd->add_option("--random", vopt.random, "add this many seeded random collisions (at most 100000)")
       ->check(CLI::Range(0, 100000));
   verify_cmd->add_option("--seed", vopt.seed, "seed of the random collisions (default 1)");
@@ -223,9 +230,22 @@ int main(int argc, char** argv) {
       sopt.engine = sens_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
       return impact3d::cli::sensitivity(sopt);
     });
-  if (verify_cmd->parsed()) return guarded("", [&] { return impact3d::verification::verify(vopt); });
+  if (verify_cmd->parsed()) {
+    // Nothing to compare is not a pass.
+    if (vopt.inputs.empty() && vopt.random == 0) {
+      std::fputs("impact3d: usage: verify: nothing to verify: give case files or directories (e.g. examples "
+                 "verification/cases), or --random N (impact3d verify --help)\n",
+                 stderr);
+      return kUsage;
+    }
+    return guarded("", [&] { return impact3d::verification::verify(vopt); });
+  }
   if (compare_cmd->parsed()) return guarded("", [&] { return impact3d::verification::compare(reference, other, copt); });
   if (digits == 0 && precision == "double") digits = 10;
-  return solve(case_path, strategies, precision,
-               {format, digits, engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated});
+  impact3d::io::RenderOptions ro;
+  ro.format = format;
+  ro.digits = digits;
+  ro.engine = engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
+  if (!units.empty()) ro.units = impact3d::units_named(units);
+  return solve(case_path, strategies, precision, ro);
 }

@@ -122,6 +122,9 @@ void collect(const json& root, std::vector<std::string> prefix, bool top, std::v
       std::vector<Item> children;
       std::size_t i = 0;
       for (auto it = node.begin(); it != node.end(); ++it, ++i) {
+        // A momentum residual over its rounding bound measures the precision that computed it, as the
+        // rounding bound does: it is no result to compare.
+        if (node.is_object() && it.key() == "residual_over_bound") continue;
         auto parts = item.parts;
         parts.push_back(node.is_object() ? it.key() : std::to_string(i));
         children.push_back({&*it, std::move(parts)});
@@ -342,8 +345,8 @@ class Comparer {
   // small vector has a poorly determined angle (a sliding that nearly stops swerves anywhere). The angle
   // is held to the arc atol / L of that vector's length L in the reference, in degrees, and never to
   // less than atol: L is the smaller of the sliding speeds before and after for the swerve angle, the
-  // contact-plane impulse for the plane angle, and |Delta-V| for the PDOF (its body x-y part is not in
-  // the file). Other fields, and an angle whose L the file does not give, are held to atol.
+  // contact-plane impulse for the plane angle, |Delta-V| for the PDOF (its body x-y part is not in
+  // the file) and the horizontal velocity after for the heading after. Other fields, and an angle whose L the file does not give, are held to atol.
   double angle_atol(const std::unordered_map<std::string, double>& numbers, const Leaf& l) const {
     const auto get = [&](const std::string& path) {
       const auto it = numbers.find(path);
@@ -358,6 +361,9 @@ class Comparer {
       if (t && z) length = std::hypot(*t, *z);
     } else if (l.parts.size() == 3 && l.parts[0] == "vehicles" && l.parts[2] == "pdof_deg") {
       length = get("vehicles." + l.parts[1] + ".delta_v_magnitude");
+    } else if (l.parts.size() == 3 && l.parts[0] == "vehicles" && l.parts[2] == "heading_after_deg") {
+      const auto x = get("vehicles." + l.parts[1] + ".velocity.0"), y = get("vehicles." + l.parts[1] + ".velocity.1");
+      if (x && y) length = std::hypot(*x, *y);
     }
     if (!length || !(*length > 0)) return tol_.atol;
     return std::max(tol_.atol, tol_.atol / *length * (180 / std::numbers::pi));

@@ -22,9 +22,17 @@ std::string render(const CaseSpec& spec, const RenderOptions& o) {
       o.warning_codes->push_back(codes);
     }
   }
-  if (o.format == "json" || o.format == "jsonl") return result_json(spec, a, precision, 0, false, {}, o.format == "jsonl", o.pick);
+  // The numbers written in the units asked for: the writers present in their spec's units.
+  CaseSpec in_units;
+  const CaseSpec* shown = &spec;
+  if (o.units && *o.units != spec.units) {
+    in_units = spec;
+    in_units.units = *o.units;
+    shown = &in_units;
+  }
+  if (o.format == "json" || o.format == "jsonl") return result_json(*shown, a, precision, 0, false, {}, o.format == "jsonl", o.pick);
   const int digits = o.digits > 0 ? o.digits : std::numeric_limits<Scalar>::digits10;
-  return report_text(spec, a, precision, digits);
+  return report_text(*shown, a, precision, digits);
 }
 
 template std::string render<ScalarAt<IMPACT3D_SCALAR_INDEX>>(const CaseSpec&, const RenderOptions&);

@@ -47,14 +47,21 @@ const std::vector<OutputPath>& monte_carlo_outputs() {
       for (int i = 0; i < 3; ++i) add(fmt::format("{}[{}]", group, i));
     add("sliding.before");
     add("sliding.after");
-    add("sliding.swerve_angle_deg", true);
+    add("sliding.swerve_angle_deg");  // in [-90, 90]: off the line of the initial sliding, not around a circle
     add("sliding.swerve_speed");
+    add("sliding.along");
     add("impulse_space.restitution_effective");
     for (int veh = 0; veh < 2; ++veh) {
       for (const char* group : {"velocity", "angular_velocity", "delta_v"})
         for (int i = 0; i < 3; ++i) add(fmt::format("vehicles[{}].{}[{}]", veh, group, i));
       add(fmt::format("vehicles[{}].delta_v_magnitude", veh));
       add(fmt::format("vehicles[{}].pdof_deg", veh), true, true);  // [0, 360)
+      for (int i = 0; i < 3; ++i) add(fmt::format("vehicles[{}].delta_v_vehicle[{}]", veh, i));
+      add(fmt::format("vehicles[{}].speed_after", veh));
+      add(fmt::format("vehicles[{}].heading_after_deg", veh), true);  // (-180, 180]
+      add(fmt::format("vehicles[{}].yaw_rate_after", veh));
+      add(fmt::format("vehicles[{}].deformation_energy", veh));
+      add(fmt::format("vehicles[{}].ees", veh));
     }
     for (const char* k : {"before", "after", "loss"}) add(fmt::format("energy.{}", k));
     return v;

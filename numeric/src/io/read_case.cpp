@@ -181,6 +181,32 @@ class Reader {
     return v.text;
   }
 
+  EnergySplitSpec energy_split(const JsonValue& v, const Where& at) const {
+    object(v, at, {"share", "stiffness"});
+    const JsonValue* share = optional(v, "share");
+    const JsonValue* stiffness = optional(v, "stiffness");
+    if ((share != nullptr) == (stiffness != nullptr)) fail(at, "give one of \"share\" and \"stiffness\"");
+    EnergySplitSpec e;
+    e.rule = share ? "share" : "stiffness";
+    e.path = at.str();
+    const Where here(at, e.rule);
+    const JsonValue& a = share ? *share : *stiffness;
+    if (!a.is(Type::array)) fail(here, fmt::format("expected an array of 2 numbers, got {}", type_name(a)));
+    if (a.size() != 2) fail(here, fmt::format("expected 2 numbers, one per vehicle, got {}", a.size()));
+    for (std::size_t i = 0; i < 2; ++i) {
+      const Where w(here, i);
+      if (!share) {
+        e.values[i] = positive(a.items[i], w);
+        continue;
+      }
+      // In range or zero (number() refuses the rest), a literal has its double's sign.
+      e.values[i] = number(a.items[i], w);
+      if (e.values[i].value < 0) fail(w, fmt::format("must be >= 0 (got {})", e.values[i].text));
+    }
+    if (share && e.values[0].value == 0 && e.values[1].value == 0) fail(here, "both shares are 0");
+    return e;
+  }
+
   void inertia(VehicleSpec& veh, const JsonValue& v, const Where& at) const {
     veh.inertia_path = at.str();
     if (v.is(Type::object)) {
@@ -323,7 +349,7 @@ class Reader {
 
   CaseSpec read(const JsonValue& root) const {
     const Where top("$");
-    object(root, top, {"name", "description", "units", "vehicles", "contact", "restitution", "strategy"});
+    object(root, top, {"name", "description", "units", "vehicles", "contact", "restitution", "energy_split", "strategy"});
     CaseSpec c;
     if (auto* n = optional(root, "name")) c.name = string(*n, Where("$.name"));
     if (auto* d = optional(root, "description")) c.description = string(*d, Where("$.description"));
@@ -344,6 +370,7 @@ class Reader {
                              ? c.restitution.value > 0
                              : compare(decimal(c.restitution), kZero) >= 0 && compare(decimal(c.restitution), kOne) <= 0;
     if (!in_unit) fail(restitution, fmt::format("must be in [0, 1] (got {})", c.restitution.text));
+    if (auto* e = optional(root, "energy_split")) c.energy_split = energy_split(*e, Where("$.energy_split"));
     const Where strategies("$.strategy");
     const JsonValue& st = required(root, top, "strategy");
     if (st.is(Type::array)) {

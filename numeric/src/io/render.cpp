@@ -1,6 +1,8 @@
 // A result rendered for a precision named by the user: one of the scalar list, or exact.
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "render_exact.hpp"
 
 #include "impact3d/io/render.hpp"
@@ -18,6 +20,9 @@ std::vector<std::string> precision_names() {
 }
 
 std::string render(const CaseSpec& spec, std::string_view precision, const RenderOptions& o) {
+  if (o.units && *o.units != spec.units && precision == "exact")
+    // Exact results are fractions of the case's own units; deg/s and km/h would make them irrational.
+    throw CaseError("--units", fmt::format("exact results are written in the case's units ({})", units_name(spec.units)));
 #if IMPACT3D_MULTIPRECISION
   if (precision == "exact") return render_exact(spec, o);
 #endif

@@ -69,6 +69,15 @@ struct StrategySpec {
   }
 };
 
+// How the energy loss is split between the vehicles for EES (reconstruction.hpp): "share" in the ratio
+// of the two values, "stiffness" in inverse ratio of two linear crush stiffnesses (any one unit).
+// Absent: in inverse ratio of the masses.
+struct EnergySplitSpec {
+  std::string rule;  // "share" | "stiffness"
+  std::array<Number, 2> values;
+  std::string path;
+};
+
 struct CaseSpec {
   std::string name;
   std::string description;  // what the case exercises, one line (optional; echoed in the result)
@@ -76,6 +85,7 @@ struct CaseSpec {
   std::array<VehicleSpec, 2> vehicles;
   ContactSpec contact;
   Number restitution;
+  std::optional<EnergySplitSpec> energy_split;
   std::vector<StrategySpec> strategies;
   bool strategy_is_array = false;
 };

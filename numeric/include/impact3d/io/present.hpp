@@ -35,12 +35,14 @@ struct Present {
 };
 
 inline const char* unit_label(Units u, const std::string& quantity) {
-  const bool si = u == Units::SI;
-  if (quantity == "mass") return si ? "kg" : "lb";
-  if (quantity == "velocity") return si ? "m/s" : "mph";
-  if (quantity == "angular_velocity") return si ? "rad/s" : "deg/s";
-  if (quantity == "impulse") return si ? "N s" : "lbf s";
-  if (quantity == "energy") return si ? "J" : "ft lbf";
+  const bool us = u == Units::US;
+  if (quantity == "mass") return us ? "lb" : "kg";
+  if (quantity == "length") return us ? "ft" : "m";
+  if (quantity == "velocity") return us ? "mph" : u == Units::metric_kmh ? "km/h" : "m/s";
+  if (quantity == "angular_velocity") return u == Units::SI ? "rad/s" : "deg/s";
+  if (quantity == "impulse") return us ? "lbf s" : "N s";
+  if (quantity == "angular_momentum") return us ? "lbf ft s" : "N m s";
+  if (quantity == "energy") return us ? "ft lbf" : "J";
   return "";
 }
 

@@ -1,6 +1,7 @@
 // A read case solved at one precision and written as the contract's result (JSON) or the text report.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +19,7 @@ struct RenderOptions {
   Engine engine = Engine::generated;
   JsonPick* pick = nullptr;  // json, jsonl: where the values it names are written (json_pick.hpp)
   std::vector<WarningSet>* warning_codes = nullptr;  // when given: each result's warnings as codes
+  std::optional<Units> units;  // the unit system written; empty: the case's
 };
 
 // Throws CaseError for inputs that fail the arithmetic checks, SolveError for no solution.

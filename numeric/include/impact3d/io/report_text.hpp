@@ -1,4 +1,6 @@
-// The person-readable report: each quantity with the paper equation it comes from, strategies side by side.
+// The person-readable report, no wider than 80 columns: the reconstruction summary first, one block per
+// strategy (what a reconstruction is compared against), then the detail, each quantity with the paper
+// equation it comes from.
 #pragma once
 
 #include <string>
@@ -9,62 +11,104 @@
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/present.hpp"
 #include "impact3d/io/strategy_kinds.hpp"
+#include "impact3d/io/text_table.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
 namespace impact3d::io {
 
 
-// Rows of a label and one cell per column, printed aligned.
-class Table {
- public:
-  void row(const std::string& label, std::vector<std::string> cells) { rows_.push_back({label, std::move(cells)}); }
-  void heading(const std::string& text) { rows_.push_back({text, {}, true}); }
-  std::string str() const {
-    std::size_t label_w = 0, cell_w = 0;
-    for (const auto& r : rows_) {
-      if (r.heading) continue;
-      label_w = std::max(label_w, r.label.size());
-      for (const auto& c : r.cells) cell_w = std::max(cell_w, c.size());
-    }
-    std::string out;
-    for (const auto& r : rows_) {
-      if (r.heading) {
-        out += "\n" + r.label + "\n";
-        continue;
-      }
-      std::string line = fmt::format("  {:<{}}", r.label, label_w);
-      for (const auto& c : r.cells) line += fmt::format("  {:>{}}", c, cell_w);
-      while (!line.empty() && line.back() == ' ') line.pop_back();
-      out += line + "\n";
-    }
-    return out;
+template <typename Scalar>
+struct ReportCells {
+  const Present<Scalar>& p;
+  // A post-impact relative velocity inside the rounding bound is zero: say so instead of printing noise.
+  std::string vel(const Solution<Scalar>& s, const Scalar& v) const {
+    using std::abs;
+    if (abs(v) > s.velocity_roundoff || !is_finite(s.velocity_roundoff)) return p.num(v, p.f.velocity);
+    return "0 (|x| < " + io::scalar_to_text(Scalar(s.velocity_roundoff / p.f.velocity), 1) + ")";
   }
-
- private:
-  struct Row {
-    std::string label;
-    std::vector<std::string> cells;
-    bool heading = false;
-  };
-  std::vector<Row> rows_;
+  std::string opt(const std::optional<Scalar>& v) const { return v ? p.num(*v) : std::string("-"); }
+  std::string opt(const std::optional<Scalar>& v, const Scalar& factor) const {
+    return v ? p.num(*v, factor) : std::string("-");
+  }
 };
+
+// The summary of one strategy: what a reconstruction is compared against, per vehicle and for the pair.
+template <typename Scalar>
+void summary_block(Table& t, const CaseSpec& c, const Solution<Scalar>& s, const std::string& label,
+                   const Present<Scalar>& p) {
+  const auto& f = p.f;
+  const ReportCells<Scalar> cell{p};
+  const auto U = [&](const char* q) { return std::string(" [") + unit_label(c.units, q) + "]"; };
+  const auto& imp = s.impulse;
+  t.heading(label);
+  t.row("regime", {std::string(regime_name(imp.regime))});
+  if (imp.mu) t.row("impulse ratio used", {p.num(*imp.mu)});
+  if (imp.mu_t) t.row("impulse ratios used, t and z", {p.num(*imp.mu_t), p.num(*imp.mu_z)});
+  if (imp.gir) t.row("GIR (eqs 14, 20)", {p.num(*imp.gir)});
+  if (imp.cir) t.row("CIR (eq 19)", {p.num(*imp.cir)});
+  t.row("impulse on vehicle 1 (n, t, z)" + U("impulse"), p.vec(imp.P_C, f.impulse));
+  t.row("", {"vehicle 1", "vehicle 2"});
+  auto both = [&](const std::string& name, auto value) { t.row(name, {value(0), value(1)}); };
+  both("Delta-V" + U("velocity"), [&](int i) { return p.num(s.change[i].dv, f.velocity); });
+  both("  longitudinal (+ forward)", [&](int i) { return p.num(s.motion[i].dv_B.x(), f.velocity); });
+  both("  lateral (+ left)", [&](int i) { return p.num(s.motion[i].dv_B.y(), f.velocity); });
+  both("  vertical (+ up)", [&](int i) { return p.num(s.motion[i].dv_B.z(), f.velocity); });
+  both("PDOF [deg] (clock)", [&](int i) {
+    const auto& ch = s.change[i];
+    return ch.pdof_deg ? fmt::format("{} ({})", p.num(*ch.pdof_deg), *ch.clock) : std::string("-");
+  });
+  both("speed after" + U("velocity"), [&](int i) { return p.num(s.motion[i].speed_after, f.velocity); });
+  both("heading after [deg]", [&](int i) { return cell.opt(s.motion[i].heading_after_deg); });
+  both("yaw rate after [deg/s]", [&](int i) { return p.num(Scalar(degrees(s.motion[i].yaw_rate_after))); });
+  both("deformation energy" + U("energy"), [&](int i) { return p.num(s.deformation.energy[i], f.energy); });
+  both("EES" + U("velocity"), [&](int i) { return cell.opt(s.deformation.ees[i], f.velocity); });
+  t.row("sliding before" + U("velocity"), {p.num(s.sliding_before, f.velocity)});
+  t.row("sliding after: along, across" + U("velocity"),
+        {s.sliding_along ? cell.vel(s, *s.sliding_along) : std::string("-"),
+         s.swerve_speed ? cell.vel(s, *s.swerve_speed) : std::string("-")});
+  t.row("swerve off the sliding line [deg]", {cell.opt(s.swerve_deg)});
+  t.row("sliding reversed", {s.reversed ? (*s.reversed ? "yes" : "no") : "-"});
+  t.row("energy before, after, lost" + U("energy"),
+        {p.num(s.energy_before, f.energy), p.num(s.energy_after, f.energy), p.num(s.energy_loss, f.energy)});
+  const auto& m = s.momentum;
+  t.row("momentum residual / bound: linear, angular 1, 2", {io::scalar_to_text(m.linear_residual, 2), io::scalar_to_text(m.angular_residual[0], 2),
+                                            io::scalar_to_text(m.angular_residual[1], 2)});
+  t.row("impulse rounding bound, relative", {io::scalar_to_text(s.rounding_bound, 2)});
+  if (s.warnings.empty()) t.row("warnings", {"none"});
+  for (const auto& w : s.warnings) t.note("WARNING: ", w.text);
+}
 
 template <typename Scalar>
 std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, int digits) {
   using io::unit_label;
   const Present<Scalar> p(c.units, digits);
   const auto& f = p.f;
+  const ReportCells<Scalar> cell{p};
   const auto U = [&](const char* q) { return std::string(" [") + unit_label(c.units, q) + "]"; };
   const char* axis[3] = {"n", "t", "z"};
   // Names and descriptions are the case author's text: escaped, so that no control character reaches a
   // terminal.
-  std::string out = fmt::format("impact3d: {} (units {}, precision {}, {} engine)\n",
-                                c.name.empty() ? "unnamed case" : io::printable(c.name), units_name(c.units), precision,
-                                engine_name(a.engine));
-  if (!c.description.empty()) out += io::printable(c.description) + "\n";
+  std::string out = wrap(fmt::format("impact3d: {} (units {}, precision {}, {} engine)",
+                                     c.name.empty() ? "unnamed case" : io::printable(c.name), units_name(c.units), precision,
+                                     engine_name(a.engine)));
+  if (!c.description.empty()) out += wrap(io::printable(c.description));
+  for (int i = 0; i < 2; ++i) out += wrap(fmt::format("vehicle {}: {}", i + 1, io::printable(c.vehicles[i].name)), kTextWidth, "");
+  std::vector<std::string> head;
+  for (const auto& s : c.strategies) head.push_back(io::strategy_label(s));
+
+  const std::string split_rule = c.energy_split ? c.energy_split->rule : "mass";
+  const auto& share = a.solutions.empty() ? std::array<Scalar, 2>{} : a.solutions[0].deformation.share;
+  Table sum;
+  const char* how = split_rule == "share" ? "as given" : split_rule == "stiffness" ? "in inverse ratio of stiffness"
+                                                                                   : "in inverse ratio of mass";
+  sum.heading(fmt::format("Summary (restitution eps = {}; yaw rates in deg/s; EES from the energy lost, split "
+                          "{}: vehicle 1 {}, vehicle 2 {})",
+                          c.restitution.text, how, p.num(share[0]), p.num(share[1])));
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) summary_block(sum, c, a.solutions[k], head[k], p);
+  out += sum.str();
 
   Table cs;
-  cs.heading("Case (eqs 4-9; impulse space as in Figure 2)");
+  cs.heading("Detail: the case (eqs 4-9; impulse space as in Figure 2)");
   cs.row("m' = m1 m2 / (m1 + m2) (eq 9)" + U("mass"), {p.num(a.m_prime, f.mass)});
   for (int k = 0; k < 3; ++k)
     cs.row(fmt::format("K row {} (a{}, b{}, c{}) (eq 9)", k + 1, k + 1, k + 1, k + 1),
@@ -80,75 +124,46 @@ std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   for (int k = 0; k < 3; ++k) cs.row(plane[k], p.vec(a.space.plane_normal.row(k).transpose(), Scalar(1)));
   out += cs.str();
 
-  Table t;
-  t.heading("Results, restitution eps = " + c.restitution.text);
-  std::vector<std::string> head;
-  for (const auto& s : c.strategies) head.push_back(io::strategy_label(s));
-  t.row("strategy", head);
-  auto each = [&](const std::string& label, auto cell) {
-    std::vector<std::string> cells;
-    for (const auto& s : a.solutions) cells.push_back(cell(s));
-    t.row(label, cells);
-  };
-  // A post-impact relative velocity inside the rounding bound is zero: say so instead of printing noise.
-  auto vel = [&](const auto& s, const Scalar& v) {
-    using std::abs;
-    if (abs(v) > s.velocity_roundoff || !is_finite(s.velocity_roundoff)) return p.num(v, f.velocity);
-    return "0 (|x| < " + io::scalar_to_text(Scalar(s.velocity_roundoff / f.velocity), 1) + ")";
-  };
-  auto opt = [&](const std::optional<Scalar>& v) { return v ? p.num(*v) : std::string("-"); };
-  each("regime (eq 14 / cap of eqs 19-20)", [&](const auto& s) { return std::string(regime_name(s.impulse.regime)); });
-  each("GIR (eqs 14, 20)", [&](const auto& s) { return opt(s.impulse.gir); });
-  each("CIR on the solution plane (eq 19)", [&](const auto& s) { return opt(s.impulse.cir); });
-  each("mu_t critical (eq 25 / 27)", [&](const auto& s) { return opt(s.impulse.mu_t_critical); });
-  each("mu_z critical (eq 26 / 27)", [&](const auto& s) { return opt(s.impulse.mu_z_critical); });
-  each("impulse ratio used (eqs 16, 22)", [&](const auto& s) { return opt(s.impulse.mu); });
-  each("mu_t, mu_z used (eq 24)", [&](const auto& s) {
-    return s.impulse.mu_t ? p.num(*s.impulse.mu_t) + ", " + p.num(*s.impulse.mu_z) : std::string("-");
-  });
-  each("solution plane angle [deg] (eqs 15, 21)", [&](const auto& s) { return opt(s.impulse.plane_angle_deg); });
-  for (int k = 0; k < 3; ++k)
-    each(fmt::format("P_{} (eqs 10-12, 18, 24)", axis[k]) + U("impulse"),
-         [&](const auto& s) { return p.num(s.impulse.P_C(k), f.impulse); });
-  const char* world[3] = {"x", "y", "z"};
-  for (int k = 0; k < 3; ++k)
-    each(fmt::format("P world {} (on vehicle 1)", world[k]) + U("impulse"), [&](const auto& s) { return p.num(s.P_W(k), f.impulse); });
-  for (int k = 0; k < 3; ++k)
-    each(fmt::format("V_rel after, {} (eq 9)", axis[k]) + U("velocity"), [&](const auto& s) { return vel(s, s.V_rf(k)); });
-  each("effective restitution -V_rnf/V_rni", [&](const auto& s) { return p.num(s.restitution_effective); });
-  each("sliding speed before" + U("velocity"), [&](const auto& s) { return p.num(s.sliding_before, f.velocity); });
-  each("sliding speed after" + U("velocity"), [&](const auto& s) { return vel(s, s.sliding_after); });
-  each("swerve angle [deg]", [&](const auto& s) { return opt(s.swerve_deg); });
-  each("swerve speed (across initial sliding)" + U("velocity"),
-       [&](const auto& s) { return s.swerve_speed ? vel(s, *s.swerve_speed) : std::string("-"); });
-  each("t sliding (Figure 2)", [&](const auto& s) { return std::string(axis_change_name(s.t_change)); });
-  each("z sliding (Figure 2)", [&](const auto& s) { return std::string(axis_change_name(s.z_change)); });
-  each("impulse-space volume (Figure 2)", [&](const auto& s) { return s.volume; });
-  for (int i = 0; i < 2; ++i) {
-    const std::string who = fmt::format("vehicle {} ({})", i + 1, io::printable(c.vehicles[i].name));
-    for (int k = 0; k < 3; ++k)
-      each(fmt::format("{} velocity after {}", who, world[k]) + U("velocity"),
-           [&](const auto& s) { return p.num(s.after[i].v_W(k), f.velocity); });
-    for (int k = 0; k < 3; ++k)
-      each(fmt::format("{} angular velocity after {} (body)", who, world[k]) + U("angular_velocity"),
-           [&](const auto& s) { return p.num(s.after[i].w_B(k), f.angular_velocity); });
-    each(who + " Delta-V" + U("velocity"), [&](const auto& s) { return p.num(s.change[i].dv, f.velocity); });
-    each(who + " PDOF [deg] (clock)", [&](const auto& s) {
-      const auto& ch = s.change[i];
-      return ch.pdof_deg ? fmt::format("{} ({} o'clock)", p.num(*ch.pdof_deg), *ch.clock) : std::string("-");
-    });
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) {
+    const auto& s = a.solutions[k];
+    const auto& imp = s.impulse;
+    Table t;
+    t.heading("Detail: " + head[k]);
+    t.row("regime (eq 14 / cap of eqs 19-20)", {std::string(regime_name(imp.regime))});
+    t.row("GIR (eqs 14, 20)", {cell.opt(imp.gir)});
+    t.row("CIR on the solution plane (eq 19)", {cell.opt(imp.cir)});
+    t.row("mu_t critical (eq 25 / 27)", {cell.opt(imp.mu_t_critical)});
+    t.row("mu_z critical (eq 26 / 27)", {cell.opt(imp.mu_z_critical)});
+    t.row("impulse ratio used (eqs 16, 22)", {cell.opt(imp.mu)});
+    t.row("mu_t, mu_z used (eq 24)", imp.mu_t ? std::vector<std::string>{p.num(*imp.mu_t), p.num(*imp.mu_z)}
+                                               : std::vector<std::string>{"-"});
+    t.row("solution plane angle [deg] (eqs 15, 21)", {cell.opt(imp.plane_angle_deg)});
+    t.row("P (n, t, z) (eqs 10-12, 18, 24)" + U("impulse"), p.vec(imp.P_C, f.impulse));
+    t.row("P world (x, y, z), on vehicle 1" + U("impulse"), p.vec(s.P_W, f.impulse));
+    t.row("V_rel after (n, t, z) (eq 9)" + U("velocity"), {cell.vel(s, s.V_rf.x()), cell.vel(s, s.V_rf.y()), cell.vel(s, s.V_rf.z())});
+    t.row("effective restitution -V_rnf/V_rni", {p.num(s.restitution_effective)});
+    t.row("sliding speed after" + U("velocity"), {cell.vel(s, s.sliding_after)});
+    t.row("t sliding (Figure 2)", {std::string(axis_change_name(s.t_change))});
+    t.row("z sliding (Figure 2)", {std::string(axis_change_name(s.z_change))});
+    t.row("impulse-space volume (Figure 2)", {s.volume});
+    for (int i = 0; i < 2; ++i) {
+      t.row(fmt::format("vehicle {} velocity after (x, y, z)", i + 1) + U("velocity"), p.vec(s.after[i].v_W, f.velocity));
+      t.row(fmt::format("vehicle {} angular velocity after (body)", i + 1) + U("angular_velocity"),
+            p.vec(s.after[i].w_B, f.angular_velocity));
+      t.row(fmt::format("vehicle {} Delta-V (x, y, z)", i + 1) + U("velocity"), p.vec(s.change[i].dv_W, f.velocity));
+    }
+    const Scalar f_angular = f.impulse * f.length;
+    const auto& m = s.momentum;
+    t.row("linear momentum before (x, y, z)" + U("impulse"), p.vec(m.linear_before_W, f.impulse));
+    t.row("linear momentum after (x, y, z)" + U("impulse"), p.vec(m.linear_after_W, f.impulse));
+    for (int i = 0; i < 2; ++i) {
+      t.row(fmt::format("vehicle {} angular momentum about its impulse centre (body axes)", i + 1) +
+                U("angular_momentum") + ", before",
+            p.vec(m.angular_before_B[i], f_angular));
+      t.row("  after", p.vec(m.angular_after_B[i], f_angular));
+    }
+    out += t.str();
   }
-  each("kinetic energy before" + U("energy"), [&](const auto& s) { return p.num(s.energy_before, f.energy); });
-  each("kinetic energy after" + U("energy"), [&](const auto& s) { return p.num(s.energy_after, f.energy); });
-  each("kinetic energy lost" + U("energy"), [&](const auto& s) { return p.num(s.energy_loss, f.energy); });
-  each("rounding bound of the impulse, relative", [&](const auto& s) { return io::scalar_to_text(s.rounding_bound, 2); });
-  out += t.str();
-
-  std::string warnings;
-  for (std::size_t k = 0; k < a.solutions.size(); ++k)
-    for (const auto& w : a.solutions[k].warnings)
-      warnings += fmt::format("  WARNING [{}]: {}\n", head[k], w.text);
-  out += warnings.empty() ? "\nNo warnings.\n" : "\nWarnings\n" + warnings;
   return out;
 }
 

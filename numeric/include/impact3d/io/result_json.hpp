@@ -38,9 +38,10 @@ void write_matrix(JsonWriter& w, const Mat3<Scalar>& m, const Present<Scalar>& p
 
 // `snap`: print post-impact relative velocities inside the computation's rounding bound as 0 (the
 // reference suite does, so that no digit of rounding noise is printed as significant).
+// `split_rule`: how the case splits the energy loss for EES ("mass", "share", "stiffness").
 template <typename Scalar>
 void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* veh, const Solution<Scalar>& s,
-                    const Present<Scalar>& p, bool snap) {
+                    const Present<Scalar>& p, bool snap, const std::string& split_rule = "mass") {
   const auto& f = p.f;
   auto snapped = [&](const Scalar& v) {
     using std::abs;
@@ -83,6 +84,8 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   vel(w.key("after"), s.sliding_after);
   if (s.swerve_deg) p.put(w.key("swerve_angle_deg"), *s.swerve_deg); else w.key("swerve_angle_deg").null();
   if (s.swerve_speed) vel(w.key("swerve_speed"), *s.swerve_speed); else w.key("swerve_speed").null();
+  if (s.sliding_along) vel(w.key("along"), *s.sliding_along); else w.key("along").null();
+  if (s.reversed) w.key("reversed").boolean(*s.reversed); else w.key("reversed").null();
   w.end_object();
   w.key("impulse_space").begin_object();
   p.put(w.key("restitution_effective"), s.restitution_effective);
@@ -101,6 +104,14 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
     p.put(w.key("delta_v_magnitude"), c.dv, f.velocity);
     if (c.pdof_deg) p.put(w.key("pdof_deg"), *c.pdof_deg); else w.key("pdof_deg").null();
     if (c.clock) w.key("pdof_clock").number([&](std::string& out) { out += std::to_string(*c.clock); }); else w.key("pdof_clock").null();
+    const auto& m = s.motion[i];
+    p.put_vec(w.key("delta_v_vehicle"), m.dv_B, f.velocity);
+    p.put(w.key("speed_after"), m.speed_after, f.velocity);
+    write_optional(w, "heading_after_deg", m.heading_after_deg, p);
+    if (!m.heading_after_deg) w.key("heading_after_deg").null();
+    p.put(w.key("yaw_rate_after"), m.yaw_rate_after, f.angular_velocity);
+    p.put(w.key("deformation_energy"), s.deformation.energy[i], f.energy);
+    if (s.deformation.ees[i]) p.put(w.key("ees"), *s.deformation.ees[i], f.velocity); else w.key("ees").null();
     w.end_object();
   }
   w.end_array();
@@ -108,6 +119,29 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   p.put(w.key("before"), s.energy_before, f.energy);
   p.put(w.key("after"), s.energy_after, f.energy);
   p.put(w.key("loss"), s.energy_loss, f.energy);
+  w.key("split").begin_object();
+  w.key("rule").string(split_rule);
+  w.key("share").number_row(2, [&](std::string& out, int i) { append_scalar(out, s.deformation.share[i], p.digits); });
+  w.end_object();
+  w.end_object();
+  const auto& mo = s.momentum;
+  const Scalar f_angular = f.impulse * f.length;
+  auto residual = [&](JsonWriter& to, const Scalar& r) { to.number([&](std::string& out) { append_scalar(out, r, 3); }); };
+  w.key("momentum").begin_object();
+  w.key("linear").begin_object();
+  p.put_vec(w.key("before"), mo.linear_before_W, f.impulse);
+  p.put_vec(w.key("after"), mo.linear_after_W, f.impulse);
+  residual(w.key("residual_over_bound"), mo.linear_residual);
+  w.end_object();
+  w.key("angular_about_impulse_centre").begin_array();
+  for (int i = 0; i < 2; ++i) {
+    w.begin_object();
+    p.put_vec(w.key("before"), mo.angular_before_B[i], f_angular);
+    p.put_vec(w.key("after"), mo.angular_after_B[i], f_angular);
+    residual(w.key("residual_over_bound"), mo.angular_residual[i]);
+    w.end_object();
+  }
+  w.end_array();
   w.end_object();
   w.key("rounding_bound").number([&](std::string& out) { append_scalar(out, s.rounding_bound, 3); });
   w.key("warnings").begin_array();
@@ -116,6 +150,7 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   w.end_object();
 }
 
+// `c.units`: the unit system the numbers are written in (render sets it from --units).
 // `digits`: significant digits of every number; 0 means every digit the precision holds (max_digits10).
 // `extra`, when given, writes further top-level keys (the exact fractions of --precision exact).
 // `one_line`: the document on one line (JSON Lines), else indented. `pick`: see json_writer.hpp.
@@ -164,7 +199,8 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   w.end_object();
   w.key("results").begin_array();
   for (std::size_t k = 0; k < a.solutions.size(); ++k)
-    write_solution(w, c.strategies[k], c.vehicles.data(), a.solutions[k], p, snap_zeros);
+    write_solution(w, c.strategies[k], c.vehicles.data(), a.solutions[k], p, snap_zeros,
+                   c.energy_split ? c.energy_split->rule : std::string("mass"));
   w.end_array();
   if (extra) extra(w);
   w.end_object();

@@ -37,12 +37,19 @@ void numbers_of_solution(const Solution<Scalar>& s, const UnitFactors<Scalar>& f
   vec(imp.P_C, f.impulse), vec(s.P_W, f.impulse);
   vec(s.V_ri, f.velocity), vec(s.V_rf, f.velocity);
   put(Scalar(s.sliding_before / f.velocity)), put(Scalar(s.sliding_after / f.velocity));
-  null_or(s.swerve_deg, one), null_or(s.swerve_speed, f.velocity);
+  null_or(s.swerve_deg, one), null_or(s.swerve_speed, f.velocity), null_or(s.sliding_along, f.velocity);
   put(s.restitution_effective);
   for (int i = 0; i < 2; ++i) {
     vec(s.after[i].v_W, f.velocity), vec(s.after[i].w_B, f.angular_velocity), vec(s.change[i].dv_W, f.velocity);
     put(Scalar(s.change[i].dv / f.velocity));
     null_or(s.change[i].pdof_deg, one);
+    const auto& m = s.motion[i];
+    vec(m.dv_B, f.velocity);
+    put(Scalar(m.speed_after / f.velocity));
+    null_or(m.heading_after_deg, one);
+    put(Scalar(m.yaw_rate_after / f.angular_velocity));
+    put(Scalar(s.deformation.energy[i] / f.energy));
+    null_or(s.deformation.ees[i], f.velocity);
   }
   put(Scalar(s.energy_before / f.energy)), put(Scalar(s.energy_after / f.energy)), put(Scalar(s.energy_loss / f.energy));
   if (c != monte_carlo_outputs().size()) throw std::logic_error("numbers_of_solution and monte_carlo_outputs disagree");

@@ -117,6 +117,13 @@ Scene<Scalar> to_scene(const CaseSpec& c) {
   for (int i = 0; i < 2; ++i) s.body[i] = to_body(c.vehicles[i], f);
   s.R_WC = contact_rotation<Scalar>(c.contact);
   s.restitution = to_scalar<Scalar>(c.restitution);
+  if (const auto& e = c.energy_split) {
+    const Scalar a = to_scalar<Scalar>(e->values[0]), b = to_scalar<Scalar>(e->values[1]);
+    const Scalar sum = a + b;
+    // E_i = F^2 / (2 k_i) for one force F: the stiffer vehicle takes the smaller share.
+    if (e->rule == "stiffness") s.energy_share = std::array<Scalar, 2>{b / sum, a / sum};
+    else s.energy_share = std::array<Scalar, 2>{a / sum, b / sum};
+  }
   const Scalar V_rn = relative_velocity_C(s).x();
   if (!(V_rn > Scalar(0)))
     throw CaseError("$.vehicles", "not approaching: the relative normal velocity at the impulse centre is " +

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/reconstruction.hpp"
 #include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/strategy.hpp"
 
@@ -91,11 +92,20 @@ struct Solution {
   Scalar velocity_roundoff;                    // post-impact relative velocities below this are zero (rounding.hpp)
   Scalar restitution_effective;                // -V_rnf / V_rni
   Scalar sliding_before{}, sliding_after{};    // |(V_rt, V_rz)|; 0 in exact arithmetic (not rational)
-  std::optional<Scalar> swerve_deg;            // signed angle from initial to final sliding, t towards z
-  std::optional<Scalar> swerve_speed;          // final sliding across the initial sliding direction
+  // Final sliding resolved on the initial sliding direction u (t, z): `sliding_along` the component along
+  // u, `swerve_speed` the component across it (t towards z). `swerve_deg`: the angle of the final sliding
+  // off the line of u, atan2(across, |along|) in [-90, 90], and `reversed` whether it points back along
+  // that line (along < 0 beyond rounding): a reversal is not a swerve.
+  std::optional<Scalar> sliding_along;
+  std::optional<Scalar> swerve_deg;
+  std::optional<Scalar> swerve_speed;
+  std::optional<bool> reversed;
   AxisChange t_change, z_change;
   std::string volume;                          // paper Figure 2: A-D, or the plane the solution lies on
   Scalar energy_before, energy_after, energy_loss;
+  std::array<VehicleMotion<Scalar>, 2> motion;
+  Deformation<Scalar> deformation;
+  MomentumCheck<Scalar> momentum;
   // Relative rounding bound of the impulse and its ratios at this precision (rounding.hpp); 0 in exact
   // arithmetic, infinite where K or J is not positive definite at this precision.
   Scalar rounding_bound = Scalar(0);
@@ -132,7 +142,15 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
       const Scalar cross = out.V_ri.y() * out.V_rf.z() - out.V_ri.z() * out.V_rf.y();
       const Scalar dot = out.V_ri.y() * out.V_rf.y() + out.V_ri.z() * out.V_rf.z();
       out.swerve_speed = cross / out.sliding_before;
-      if (out.sliding_after > tol) out.swerve_deg = degrees(Scalar(atan2(cross, dot)));
+      out.sliding_along = dot / out.sliding_before;
+      if (out.sliding_after > tol) {
+        // A component within rounding of zero is zero (the report's rule): the final sliding is then on
+        // the line, or square to it, exactly; and the angle keeps no kink of |along| at along = 0.
+        if (abs(*out.swerve_speed) <= tol) out.swerve_deg = Scalar(0);
+        else if (abs(*out.sliding_along) <= tol) out.swerve_deg = Scalar(cross > Scalar(0) ? 90 : -90);
+        else out.swerve_deg = degrees(Scalar(atan2(cross, abs(dot))));
+        out.reversed = *out.sliding_along < -tol;
+      }
     }
   }
   out.t_change = axis_change(out.V_ri.y(), out.V_rf.y(), tol);
@@ -158,8 +176,17 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
                             "normal impulse P_n <= 0: the constraints demand a pulling contact"});
   // The loss is a difference of energies of size energy_before; at restitution 1 it is zero in exact
   // arithmetic.
-  if (out.energy_loss < -rounding::energy_roundoff(kappa, out.energy_before))
-    out.warnings.push_back({WarningCode::energy_gained, "kinetic energy gained: loss < 0"});
+  const Scalar energy_roundoff = rounding::energy_roundoff(kappa, out.energy_before);
+  const bool gained = out.energy_loss < -energy_roundoff;
+  if (gained) out.warnings.push_back({WarningCode::energy_gained, "kinetic energy gained: loss < 0"});
+
+  for (int i = 0; i < 2; ++i) out.motion[i] = vehicle_motion(s.body[i], out.after[i]);
+  out.deformation = deformation(s.body, s.energy_share, out.energy_loss, energy_roundoff);
+  out.momentum = momentum_check(s.body, out.after);
+  const auto& m = out.momentum;
+  if (m.linear_residual > Scalar(1) || m.angular_residual[0] > Scalar(1) || m.angular_residual[1] > Scalar(1))
+    out.warnings.push_back({WarningCode::momentum_residual,
+                            "the post-impact states miss the momentum balance by more than its rounding bound"});
   return out;
 }
 

@@ -11,7 +11,7 @@
 //   Results       kResultRoundings, kTrustedFraction, spd_condition, spd_condition_bound, amplification,
 //                 amplification_bound, quotient_factor, relative_bound, agreement_bound, precision_for
 //   Solves        kSolveRoundings, solve_roundoff, velocity_scale, velocity_roundoff, energy_roundoff
-//   Short sums    kArithmeticRoundings, arithmetic_roundoff, pdof_roundoff
+//   Short sums    kArithmeticRoundings, arithmetic_roundoff, pdof_roundoff, kMomentumRoundings, momentum_roundoff
 //   Inputs        kParallelRoundings, parallel_within_rounding, kOrthonormalDigits, orthonormality_tolerance
 //   Reference     kExactCheckDigits, exact_check_tolerance, kEngineAgreementDigits, engine_agreement_tolerance
 //
@@ -240,6 +240,21 @@ Scalar arithmetic_roundoff(const Scalar& scale) {
 template <typename Scalar>
 Scalar pdof_roundoff(const Scalar& delta_v) {
   return arithmetic_roundoff(delta_v);
+}
+
+// Momentum is conserved by every impulse law: the pair's linear momentum, and each vehicle's angular
+// momentum about its impulse centre (the impulse has no moment there). Computed from the states, the
+// residual after - before is made of: the states' update by P (v + P/m; w + J^-1 (r x P) by Cholesky,
+// whose residual is backward stable, a few eps ||J|| |dw|, with no condition number), and the momenta's
+// own products and sums (a rotation, a cross product, J w: under ten roundings a component). Relative to
+// `momentum_scale` (1-norms, rational: the terms' magnitudes before and after), 32 covers them with room.
+// The report prints the residual over this bound: at most 1 when the states conserve momentum.
+inline constexpr double kMomentumRoundings = 32;
+
+template <typename Scalar>
+Scalar momentum_roundoff(const Scalar& scale) {
+  if constexpr (is_exact_v<Scalar>) return Scalar(0);
+  else return Scalar(kMomentumRoundings) * std::numeric_limits<Scalar>::epsilon() * scale;
 }
 
 // ---- Inputs -------------------------------------------------------------------------------------------

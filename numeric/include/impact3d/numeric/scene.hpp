@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "impact3d/numeric/types.hpp"
 
@@ -22,6 +23,9 @@ struct Scene {
   std::array<RigidBody<Scalar>, 2> body;
   Mat3<Scalar> R_WC;  // contact -> world; columns n, t, z (n points into body 0, "vehicle 1")
   Scalar restitution;
+  // The share of the kinetic energy lost that each vehicle's deformation takes (summing to 1), for EES;
+  // empty: in inverse proportion to mass (reconstruction.hpp).
+  std::optional<std::array<Scalar, 2>> energy_share;
 };
 
 }  // namespace impact3d

@@ -57,6 +57,7 @@ enum class WarningCode {
   not_finite,              // a result is NaN or infinite at this precision
   rounding,                // the rounding bound exceeds the trusted fraction (rounding.hpp)
   undecided,               // a regime decision lies within the rounding bound of its threshold
+  momentum_residual,       // the post-impact states miss a momentum balance by more than its rounding bound
 };
 
 struct Warning {
