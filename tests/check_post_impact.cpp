@@ -33,3 +33,29 @@ TEST_CASE("swerve: the angle and the across-component of the final sliding", "[s
   }
   CHECK(checked == 200);  // nothing in the loop skips a case
 }
+
+TEST_CASE("the figure's volume letters lie in the volumes the post-impact state names", "[figures][volumes]") {
+  std::mt19937_64 g(4242);
+  int checked = 0;
+  for (int n = 0; n < 200; ++n) {
+    const Scene<double> s = random_scene(g);
+    const auto a = analyze(s, {PcCrash<double>{0.4}});
+    const auto& p = a.problem();
+    const auto points = volume_points(a.space, a.space.P_max_loss.norm() / 3);
+    REQUIRE(points.size() == 4);
+    std::string letters;
+    for (const auto& v : points) {
+      // The post-impact relative velocity of that impulse (eq 9) and post_impact.hpp's rules: separating
+      // where V_rf,n < 0 (A, B), the t sliding continued where V_rf,t keeps V_ri,t's sign (A, D).
+      const Vec3<double> V_rf = p.V_ri - p.K * v.P / p.m_prime;
+      const bool separating = V_rf.x() < 0, continued = V_rf.y() * p.V_ri.y() > 0;
+      const char want = separating ? (continued ? 'A' : 'B') : (continued ? 'D' : 'C');
+      CHECK(v.letter == want);
+      letters += v.letter;
+      ++checked;
+    }
+    std::sort(letters.begin(), letters.end());
+    CHECK(letters == "ABCD");
+  }
+  CHECK(checked == 800);
+}

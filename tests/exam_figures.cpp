@@ -4,8 +4,11 @@
 // bundled example, with the offset-frontal Wach case (a negative ratio, plane angle -179.96 deg) among
 // them: a figure that computes its own geometry, or drops a sign or a warning, fails here.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <filesystem>
 #include <limits>
+#include <map>
+#include <set>
 #include <regex>
 #include <sstream>
 
@@ -59,6 +62,19 @@ double number_after(const std::string& text, const std::string& key) {
 // The figure prints {:.6g}; the report's value printed so must read the same.
 std::string six(double x) { return fmt::format("{:.6g}", x); }
 
+// The rows of a "label,value" file after its header.
+std::vector<std::pair<std::string, double>> rows(const std::string& csv) {
+  std::vector<std::pair<std::string, double>> out;
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    const auto comma = line.rfind(',');
+    out.push_back({line.substr(0, comma), std::stod(line.substr(comma + 1))});
+  }
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("every solution-plane figure states the report's angle, CIR, GIR and warnings", "[plot][figures]") {
@@ -111,14 +127,34 @@ TEST_CASE("every solution-plane figure states the report's angle, CIR, GIR and w
       // 17-digit text both ways; the in-plane component is a dot product of a few roundings: 8 eps.
       CHECK(std::fabs(P_n - P[0].get<double>()) <= 4 * kEps * std::fabs(P[0].get<double>()));
       CHECK(std::fabs(std::fabs(P_u) - P_cp) <= 8 * kEps * (P_cp + std::fabs(P[0].get<double>())));
-      // pc-crash sweeps mu over 0 to 1.5 GIR of eq 14: the GIR the report gives.
-      if (kind == "pc-crash") {
-        const std::string sweep = slurp(dir / fmt::format("sweep_mu_{}.gp", k + 1));
-        const double top = number_after(line_starting(sweep, "set xrange [0:"), "set xrange [0:");
-        const double gir = limits.at("gir").get<double>();
-        // 1.5 GIR printed to 17 digits: the product's one rounding and the text's.
-        CHECK(std::fabs(top - 1.5 * gir) <= 4 * kEps * std::fabs(1.5 * gir));
+      // The mu sweep of this strategy (or of the first strategy alike but for mu) marks its mu, and for
+      // the first also GIR and CIR; it spans 1.5 GIR of eq 14 and every mark.
+      for (std::size_t j = 0; j <= k; ++j) {
+        const fs::path marks_file = dir / fmt::format("sweep_mu_{}.marks.csv", j + 1);
+        if (!fs::exists(marks_file)) continue;
+        const auto marks = rows(slurp(marks_file));
+        const std::string key = kind == "brach" ? "mu_t" : "mu";
+        const auto& mu = r.at("strategy").at(key);
+        if (!mu.is_number()) continue;  // "critical": marked with the ratio found, by the first only
+        const auto mine = std::find_if(marks.begin(), marks.end(), [&](const auto& m) { return m.first.rfind(key + "=", 0) == 0 &&
+                                                                                                 std::fabs(m.second - mu.get<double>()) == 0; });
+        if (mine == marks.end()) continue;  // a sweep of other strategies
         ++sweeps;
+        if (j == k) {
+          for (const char* limit : {"gir", "cir"}) {
+            if (!limits.contains(limit) || limits.at(limit).is_null()) continue;
+            const double v = limits.at(limit).get<double>();
+            std::string name(limit);
+            std::transform(name.begin(), name.end(), name.begin(), ::toupper);
+            const auto m = std::find_if(marks.begin(), marks.end(), [&](const auto& x) { return x.first == name + "=" + six(v); });
+            REQUIRE(m != marks.end());
+            CHECK(std::fabs(m->second - v) <= 4 * kEps * std::fabs(v));  // 17 digits both ways
+          }
+        }
+        const std::string sweep = slurp(dir / fmt::format("sweep_mu_{}.gp", j + 1));
+        const double top = number_after(line_starting(sweep, "set xrange [0:"), "set xrange [0:");
+        if (kind == "pc-crash") CHECK(top >= 1.5 * limits.at("gir").get<double>() * (1 - 4 * kEps));
+        for (const auto& m : marks) CHECK(top > m.second);
       }
     }
     fs::remove_all(dir);
@@ -129,4 +165,142 @@ TEST_CASE("every solution-plane figure states the report's angle, CIR, GIR and w
   CHECK(warnings_checked >= 1);
   CHECK(sweeps >= 3);
   CHECK(wach_negative_seen);  // the offset-frontal Wach case
+}
+
+namespace {
+
+// Every `title '...'` of a script but the multiplot's, unescaped.
+std::vector<std::string> key_titles(const std::string& script) {
+  std::vector<std::string> out;
+  std::istringstream in(script);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("set multiplot", 0) == 0) continue;
+    for (std::size_t at = line.find(" title '"); at != std::string::npos; at = line.find(" title '", at + 1))
+      out.push_back(quoted_strings(line.substr(at + 7)).at(0));
+  }
+  return out;
+}
+
+std::string xml_escaped(const std::string& text) {
+  std::string out;
+  for (char ch : text) out += ch == '&' ? "&amp;" : ch == '<' ? "&lt;" : ch == '>' ? "&gt;" : std::string(1, ch);
+  return out;
+}
+
+// pt, ps and colour of each `with points` item of a script, by its key title.
+struct Look {
+  int glyph;
+  double size;
+  std::string colour;
+};
+std::map<std::string, Look> looks(const std::string& script) {
+  std::map<std::string, Look> out;
+  static const std::regex item(R"(with points pt (\d+) ps ([0-9.]+) lw 2 lc rgb '(#[0-9a-f]{6})' title '([^']*)')");
+  for (std::sregex_iterator it(script.begin(), script.end(), item), end; it != end; ++it)
+    out[(*it)[4]] = {std::stoi((*it)[1]), std::stod((*it)[2]), (*it)[3]};
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("every key entry is in the SVG, and the PNG is drawn from the same script", "[plot][figures]") {
+  const fs::path svg_dir = kWork / "keys_svg", png_dir = kWork / "keys_png";
+  fs::remove_all(svg_dir);
+  fs::remove_all(png_dir);
+  const std::string fig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
+  REQUIRE(run_argv({"plot", fig8, "-o", svg_dir.string()}).status == 0);
+  REQUIRE(run_argv({"plot", fig8, "-o", png_dir.string(), "--png"}).status == 0);
+  int scripts = 0, entries = 0;
+  for (const auto& e : fs::directory_iterator(svg_dir)) {
+    if (e.path().extension() != ".gp") continue;
+    ++scripts;
+    const std::string name = e.path().stem().string();
+    INFO(name);
+    const std::string script = slurp(e.path()), svg = slurp(svg_dir / (name + ".svg"));
+    for (const auto& title : key_titles(script)) {
+      INFO(title);
+      CHECK(svg.find(">" + xml_escaped(title) + "<") != std::string::npos);
+      ++entries;
+    }
+    // The PNG's script is the SVG's but for the terminal line and the point sizes (each terminal's own).
+    std::string png_script = slurp(png_dir / (name + ".gp"));
+    CHECK(png_script.rfind("set terminal pngcairo", 0) == 0);
+    const std::regex size(" ps [0-9.]+ ");
+    CHECK(std::regex_replace(png_script.substr(png_script.find('\n')), size, " ps N ") ==
+          std::regex_replace(script.substr(script.find('\n')), size, " ps N "));
+    CHECK(slurp(png_dir / (name + ".png")).rfind("\x89PNG", 0) == 0);
+  }
+  // Figure 8: a contact plane, an impulse space, four solution planes, three mu and four eps sweeps.
+  CHECK(scripts == 13);
+  CHECK(entries >= 80);
+  // The shaded planes of the impulse space each have a key entry (gnuplot draws none for polygons).
+  const std::string space = slurp(svg_dir / "impulse_space.gp");
+  std::size_t polygons = 0;
+  for (std::size_t at = space.find("with polygons"); at != std::string::npos; at = space.find("with polygons", at + 1)) ++polygons;
+  CHECK(polygons == 6);
+  for (const char* plane : {"maximum-compression plane", "t no-sliding plane", "z no-sliding plane", "PC-Crash plane (phi_FI, eq 15)",
+                            "Wach plane (phi, eq 21)"})
+    CHECK(space.find(fmt::format("fs solid 0.4 title '{}'", plane)) != std::string::npos);
+  // The paper's four volumes are labelled.
+  for (const char* v : {"'A' at", "'B' at", "'C' at", "'D' at"}) CHECK(space.find(v) != std::string::npos);
+}
+
+TEST_CASE("a strategy looks the same in every figure; coincident points are drawn around each other and named", "[plot][figures]") {
+  const fs::path dir = kWork / "looks";
+  fs::remove_all(dir);
+  const std::string fig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
+  REQUIRE(run_argv({"plot", fig8, "-o", dir.string()}).status == 0);
+  const auto contact = looks(slurp(dir / "contact_plane.gp")), space = looks(slurp(dir / "impulse_space.gp"));
+  // Figure 8's pc-crash mu=1.0 is the Full Impact, and Brach with both ratios critical is the Critical
+  // Impulse Line's point (the paper's Figure 8 discussion): each drawn larger around the other.
+  const std::vector<std::string> strategies{"pc-crash mu=1.0", "pc-crash mu=0.4", "wach mu=0.4 limit=cir",
+                                            "brach mu_t=critical mu_z=critical"};
+  REQUIRE(contact.count("pc-crash mu=1.0 (= Full Impact)"));
+  REQUIRE(contact.count("brach mu_t=critical mu_z=critical (= no sliding (CIL))"));
+  CHECK(contact.at("pc-crash mu=1.0 (= Full Impact)").size > contact.at("Full Impact").size);
+  CHECK(contact.at("brach mu_t=critical mu_z=critical (= no sliding (CIL))").size > contact.at("no sliding (CIL)").size);
+  const auto find = [](const std::map<std::string, Look>& m, const std::string& label) {
+    for (const auto& [title, look] : m)
+      if (title == label || title.rfind(label + " (= ", 0) == 0) return look;
+    FAIL("no point " << label);
+    return Look{};
+  };
+  std::set<std::pair<int, std::string>> seen;
+  for (std::size_t k = 0; k < strategies.size(); ++k) {
+    INFO(strategies[k]);
+    const Look a = find(contact, strategies[k]), b = find(space, strategies[k]);
+    const Look c = find(looks(slurp(dir / fmt::format("solution_plane_{}.gp", k + 1))), strategies[k]);
+    CHECK(a.glyph == b.glyph);
+    CHECK(a.glyph == c.glyph);
+    CHECK(a.colour == b.colour);
+    CHECK(a.colour == c.colour);
+    seen.insert({a.glyph, a.colour});
+    // No strategy takes a reference point's glyph.
+    for (const char* ref : {"Full Impact", "no sliding (CIL)"}) CHECK(a.glyph != contact.at(ref).glyph);
+    CHECK(a.glyph != space.at("maximum energy loss (eps = 0)").glyph);
+  }
+  CHECK(seen.size() == strategies.size());
+}
+
+TEST_CASE("sweeps draw a value within its rounding bound as zero", "[plot][figures]") {
+  const fs::path dir = kWork / "zero";
+  fs::remove_all(dir);
+  REQUIRE(run_argv({"plot", std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json", "-o", dir.string()}).status == 0);
+  // Figure 8's Brach with mu_z critical leaves no sliding across the initial sliding (along t): the
+  // computed value is rounding, up to 1e-15 m/s, which the sweep drew as data before.
+  std::istringstream in(slurp(dir / "sweep_mu_4.csv"));
+  std::string line;
+  std::getline(in, line);
+  REQUIRE(line == "mu_t,sliding_along_after,sliding_across_after,swerve_deg,energy_loss");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    REQUIRE(cells.size() == 5);
+    CHECK(cells[2] == "0");
+    ++rows;
+  }
+  CHECK(rows == 61);
 }

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -63,7 +64,18 @@ TEST_CASE("every figure of every example renders as SVG and draws the computed i
     const std::size_t n = result["results"].size();
     std::vector<std::string> figures{"contact_plane", "impulse_space"};
     for (std::size_t k = 1; k <= n; ++k)
-      for (const char* f : {"solution_plane_", "sweep_mu_", "sweep_eps_"}) figures.push_back(f + std::to_string(k));
+      for (const char* f : {"solution_plane_", "sweep_eps_"}) figures.push_back(f + std::to_string(k));
+    // One mu sweep for strategies alike but for the ratio swept (mu; Brach's mu_t), named after the first.
+    std::set<std::string> swept;
+    for (std::size_t k = 0; k < n; ++k) {
+      auto alike = result["results"][k]["strategy"];
+      alike.erase(alike["name"] == "brach" ? "mu_t" : "mu");
+      const bool first = swept.insert(alike.dump()).second;
+      const fs::path mu = out / fmt::format("sweep_mu_{}.svg", k + 1);
+      INFO(mu.string());
+      CHECK(fs::exists(mu) == first);
+      if (first) figures.push_back(fmt::format("sweep_mu_{}", k + 1));
+    }
     for (const auto& f : figures) {
       INFO(f);
       const std::string svg = slurp(out / (f + ".svg"));
@@ -80,15 +92,20 @@ TEST_CASE("every figure of every example renders as SVG and draws the computed i
       CHECK(near(cp[k + 2].second[0], P[1].get<double>()));
       CHECK(near(cp[k + 2].second[1], P[2].get<double>()));
     }
-    // The impulse-space view: (P_t, P_z, P_n), after the maximum-energy-loss point.
+    // The impulse-space view: (P_t, P_z, P_n); the maximum-energy-loss point, the Full Impact and the
+    // Critical Impulse Line's point (where it exists), then the strategies'.
     const auto is = points(out / "impulse_space.points.csv");
-    REQUIRE(is.size() == n + 1);
+    REQUIRE(is.size() >= n + 2);
+    REQUIRE(is.size() <= n + 3);
+    CHECK(is[0].first == "maximum energy loss (eps = 0)");
     const auto& mx = result["impulse_space"]["max_energy_loss_impulse"];
-    CHECK(near(is[0].second[2], mx[0].get<double>()));
+    for (int c = 0; c < 3; ++c) CHECK(near(is[0].second[(c + 2) % 3], mx[c].get<double>()));
+    const std::size_t first = is.size() - n;
     for (std::size_t k = 0; k < n; ++k) {
       const auto& P = result["results"][k]["impulse"]["contact"];
-      CHECK(near(is[k + 1].second[0], P[1].get<double>()));
-      CHECK(near(is[k + 1].second[2], P[0].get<double>()));
+      CHECK(near(is[first + k].second[0], P[1].get<double>()));
+      CHECK(near(is[first + k].second[1], P[2].get<double>()));
+      CHECK(near(is[first + k].second[2], P[0].get<double>()));
     }
     // Each solution plane: (in-plane impulse, P_n) = (+-|(P_t, P_z)|, P_n) on the strategy's plane, negative
     // where the impulse points against the plane's direction (a negative ratio; exam_figures checks the sign).

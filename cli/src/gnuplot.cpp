@@ -157,6 +157,20 @@ std::string gnuplot_string(std::string_view text) {
   return out + "'";
 }
 
+std::string gnuplot_terminal(bool png, int width, int height) {
+  return fmt::format("set terminal {} size {},{}\n", png ? "pngcairo enhanced font 'sans,10'" : "svg enhanced font 'sans,12'",
+                     width, height);
+}
+
+std::string draw_figure(const OutputDir& dir, const std::string& name, const std::string& script, bool png,
+                        std::string& warnings) {
+  dir.write(name + ".gp", script);
+  const std::string image = name + (png ? ".png" : ".svg");
+  const std::string messages = run_gnuplot(dir, name + ".gp", image);
+  if (!messages.empty()) warnings += fmt::format("impact3d: warning: gnuplot on {}.gp: {}\n", name, messages);
+  return image + "\n";
+}
+
 void require_gnuplot() {
   const int null = above_std(::open("/dev/null", O_WRONLY | O_CLOEXEC));
   const pid_t pid = spawn({"gnuplot", "--version"}, null, null, -1);

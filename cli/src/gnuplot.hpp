@@ -37,6 +37,14 @@ std::string gnuplot_string(std::string_view text);
 // message line escaped.
 std::string run_gnuplot(const OutputDir& dir, const std::string& script, const std::string& image);
 
+// The `set terminal` line of every figure: cairo's antialiased PNG (dash styles kept), or SVG.
+std::string gnuplot_terminal(bool png, int width, int height);
+
+// Writes NAME.gp holding `script` and runs it into NAME.png or NAME.svg; returns that image's name and a
+// line end. gnuplot's messages, if any, are added to `warnings` as one line naming the script.
+std::string draw_figure(const OutputDir& dir, const std::string& name, const std::string& script, bool png,
+                        std::string& warnings);
+
 // Throws UserError when no gnuplot can be started.
 void require_gnuplot();
 

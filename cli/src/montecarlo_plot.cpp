@@ -26,17 +26,13 @@ struct Drawing {
 
 std::string header(const Drawing& d, const std::string& title, const std::string& xlabel, const std::string& ylabel) {
   return fmt::format(
-      "set terminal {} size 800,550\nset datafile separator comma\nset grid\nset key below noenhanced\n"
+      "{}set datafile separator comma\nset grid\nset key below noenhanced\n"
       "set title {} noenhanced\nset xlabel {} noenhanced\nset ylabel {} noenhanced\n",
-      d.png ? "png" : "svg enhanced", gnuplot_string(title), gnuplot_string(xlabel), gnuplot_string(ylabel));
+      gnuplot_terminal(d.png, 800, 550), gnuplot_string(title), gnuplot_string(xlabel), gnuplot_string(ylabel));
 }
 
 void draw(Drawing& d, const std::string& name, const std::string& script) {
-  d.dir.write(name + ".gp", script);
-  const std::string image = name + (d.png ? ".png" : ".svg");
-  const std::string messages = run_gnuplot(d.dir, name + ".gp", image);
-  if (!messages.empty()) d.warnings += fmt::format("impact3d: warning: gnuplot on {}.gp: {}\n", name, messages);
-  d.written += image + "\n";
+  d.written += draw_figure(d.dir, name, script, d.png, d.warnings);
 }
 
 std::size_t output_index(const std::string& path) {

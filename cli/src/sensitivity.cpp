@@ -41,20 +41,19 @@ std::string tornado(const io::SensitivityRun& run, std::size_t k, int vehicle, c
   const std::string name = fmt::format("sens{}_tornado_dv{}", k, vehicle);
   dir.write(name + ".dat", data);
   const std::string script = fmt::format(
-      "set terminal {} size 900,{}\nset datafile separator comma\nset grid xtics\nunset key\n"
+      "{}set datafile separator comma\nset grid xtics\nunset key\n"
       "set title {} noenhanced\nset xlabel {} noenhanced\nset ytics noenhanced\nset yrange [-0.7:{}]\n"
       "set style fill solid 0.6\nset yzeroaxis lt -1\n"
       "plot '{}' using (0):0:(0):2:($0-0.38):($0+0.38):ytic(1) with boxxyerror lc rgb '#3060a0'\n",
-      png ? "png" : "svg enhanced", 200 + 30 * bars.size(),
+      gnuplot_terminal(png, 900, static_cast<int>(200 + 30 * bars.size())),
       gnuplot_string(fmt::format("{} ({}): vehicle {} delta-V {:.4g}", io::strategy_label(r.strategy), r.regime, vehicle + 1,
                                  r.values[c])),
       gnuplot_string("elasticity: relative change of delta-V per relative change of the input"),
       static_cast<double>(bars.size()) - 0.3, name + ".dat");
-  dir.write(name + ".gp", script);
-  const std::string image = name + (png ? ".png" : ".svg");
-  const std::string messages = run_gnuplot(dir, name + ".gp", image);
-  if (!messages.empty()) std::fprintf(stderr, "impact3d: warning: gnuplot on %s.gp: %s\n", name.c_str(), messages.c_str());
-  return image + "\n";
+  std::string warnings;
+  const std::string written = draw_figure(dir, name, script, png, warnings);
+  std::fputs(warnings.c_str(), stderr);
+  return written;
 }
 
 }  // namespace

@@ -11,6 +11,9 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
+
+#include <Eigen/LU>
 
 #include "impact3d/numeric/problem.hpp"
 
@@ -39,6 +42,38 @@ ImpulseSpace<Scalar> impulse_space(const Problem<Scalar>& p) {
   if (d.x() < Scalar(0)) d = -d;
   s.cil_direction = d.normalized();
   return s;
+}
+
+// A point inside each of the paper's volumes A-D (Figure 2), `reach` from the maximum-energy-loss point:
+// the volumes are cut by the maximum-compression plane (above it the bodies separate: A, B) and the t
+// no-sliding plane (on the origin's side the t sliding continues: A, D; beyond it, it reverses: B, C).
+// The point moves along a sum of the dual basis vectors of the three plane normals, so it crosses each
+// of those two planes to the side wanted and stays on the z no-sliding plane. Empty without initial t sliding (no volumes then)
+// or where the normals are dependent.
+template <typename Scalar>
+struct VolumePoint {
+  char letter;
+  Vec3<Scalar> P;  // contact axes
+};
+
+template <typename Scalar>
+std::vector<VolumePoint<Scalar>> volume_points(const ImpulseSpace<Scalar>& s, const Scalar& reach) {
+  std::vector<VolumePoint<Scalar>> out;
+  const Scalar t_side = s.plane_offset(1);
+  if (t_side == Scalar(0)) return out;
+  const Eigen::FullPivLU<Mat3<Scalar>> lu(s.plane_normal);
+  if (!lu.isInvertible()) return out;
+  const Mat3<Scalar> dual = lu.inverse();  // column k: crosses plane k by 1, the others by 0
+  for (const int separating : {1, -1})
+    for (const bool continued : {true, false}) {
+      // Continued: on the origin's side of the t plane, where n_t . P - offset_t has the sign of -offset_t.
+      const Scalar across_t = (continued == (t_side > Scalar(0))) ? Scalar(-1) : Scalar(1);
+      Vec3<Scalar> step = Scalar(separating) * dual.col(0) + across_t * dual.col(1);
+      step *= reach / step.norm();
+      const char letter = separating > 0 ? (continued ? 'A' : 'B') : (continued ? 'D' : 'C');
+      out.push_back({letter, s.P_max_loss + step});
+    }
+  return out;
 }
 
 // A line a x + b y = r in a figure's coordinates.
