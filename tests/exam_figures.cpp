@@ -5,6 +5,8 @@
 // them: a figure that computes its own geometry, or drops a sign or a warning, fails here.
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <array>
+#include <fstream>
 #include <filesystem>
 #include <limits>
 #include <map>
@@ -230,8 +232,9 @@ TEST_CASE("every key entry is in the SVG, and the PNG is drawn from the same scr
           std::regex_replace(script.substr(script.find('\n')), size, " ps N "));
     CHECK(slurp(png_dir / (name + ".png")).rfind("\x89PNG", 0) == 0);
   }
-  // Figure 8: a contact plane, an impulse space, four solution planes, three mu and four eps sweeps.
-  CHECK(scripts == 13);
+  // Figure 8: a contact plane, an impulse space, four solution planes, three mu and four eps sweeps,
+  // four collision diagrams.
+  CHECK(scripts == 17);
   CHECK(entries >= 80);
   // The shaded planes of the impulse space each have a key entry (gnuplot draws none for polygons).
   const std::string space = slurp(svg_dir / "impulse_space.gp");
@@ -303,4 +306,109 @@ TEST_CASE("sweeps draw a value within its rounding bound as zero", "[plot][figur
     ++rows;
   }
   CHECK(rows == 61);
+}
+
+namespace {
+
+// NAME.arrows.csv: label -> (from, value, drawn per unit).
+struct ArrowRow {
+  std::array<double, 3> from, value;
+  double scale;
+};
+std::map<std::string, ArrowRow> arrows(const std::string& csv) {
+  std::map<std::string, ArrowRow> out;
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string label, cell;
+    std::getline(ss, label, ',');
+    std::vector<double> v;
+    while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
+    REQUIRE(v.size() == 7);
+    out[label] = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6]};
+  }
+  return out;
+}
+
+bool near_vec(const std::array<double, 3>& a, const nlohmann::json& b, double eps_count) {
+  double scale = 0;
+  for (int c = 0; c < 3; ++c) scale = std::max(scale, std::fabs(b[c].get<double>()));
+  for (int c = 0; c < 3; ++c)
+    if (std::fabs(a[c] - b[c].get<double>()) > eps_count * kEps * scale) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("the collision diagram draws solve's velocities and impulse from CGs placed by the impulse centres", "[plot][figures][collision]") {
+  int diagrams = 0;
+  for (const char* file : {"fig8_side_impact.json", "us_pickup_into_sedan.json"}) {
+    const std::string path = std::string(IMPACT3D_EXAMPLES_DIR) + "/" + file;
+    INFO(file);
+    const fs::path dir = kWork / (std::string("collision_") + file);
+    fs::remove_all(dir);
+    REQUIRE(run_argv({"plot", path, "-o", dir.string()}).status == 0);
+    const auto solved = nlohmann::json::parse(run_argv({"solve", path, "--format", "json"}).out);
+    const auto in_case = nlohmann::json::parse(slurp(path));
+    for (std::size_t k = 0; k < solved["results"].size(); ++k) {
+      const auto& r = solved["results"][k];
+      const auto rows = arrows(slurp(dir / fmt::format("collision_{}.arrows.csv", k + 1)));
+      for (int i = 0; i < 2; ++i) {
+        const auto& before = rows.at(fmt::format("vehicle {} velocity before", i + 1));
+        const auto& after = rows.at(fmt::format("vehicle {} velocity after", i + 1));
+        // Before: the case's own numbers (a unit factor there and back: 4 eps); after: solve's.
+        CHECK(near_vec(before.value, in_case["vehicles"][i]["velocity"], 4));
+        CHECK(near_vec(after.value, r["vehicles"][i]["velocity"], 4));
+        // The CG lies where the impulse centre, turned into the world, puts it: as far as the case says.
+        const auto& ic = in_case["vehicles"][i]["impulse_center"];
+        const double want = std::hypot(ic[0].get<double>(), ic[1].get<double>(), ic[2].get<double>());
+        CHECK(std::fabs(std::hypot(before.from[0], before.from[1], before.from[2]) - want) <= 8 * kEps * want);
+        CHECK(before.scale == after.scale);  // one time scale for every velocity
+      }
+      CHECK(near_vec(rows.at("impulse on vehicle 1").value, r["impulse"]["world"], 4));
+      for (const char* axis : {"n", "t", "z"}) {
+        const auto& a = rows.at(std::string("contact axis ") + axis).value;
+        CHECK(std::fabs(std::hypot(a[0], a[1], a[2]) - 1) <= 4 * kEps);
+      }
+      // Level vehicles and a level contact: the plan alone.
+      CHECK(slurp(dir / fmt::format("collision_{}.gp", k + 1)).find("set multiplot") == std::string::npos);
+      ++diagrams;
+    }
+  }
+  CHECK(diagrams >= 6);
+  // Pitched and rolled vehicles: an elevation beside the plan.
+  const fs::path tilted = kWork / "collision_tilted";
+  fs::remove_all(tilted);
+  REQUIRE(run_argv({"plot", std::string(IMPACT3D_CASES_DIR) + "/pitched_rolled_vehicles.json", "-o", tilted.string()}).status == 0);
+  CHECK(slurp(tilted / "collision_1.gp").find("set multiplot layout 1,2") != std::string::npos);
+  CHECK(slurp(tilted / "collision_1.gp").find("'elevation (along the normal''s horizontal, z up)'") != std::string::npos);
+}
+
+TEST_CASE("given dimensions draw the box: a level vehicle's outline is its length and width about the CG", "[plot][figures][collision]") {
+  auto c = nlohmann::json::parse(slurp(std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json"));
+  c["vehicles"][0]["dimensions"] = {{"length", 4.8}, {"width", 1.8}, {"cg_to_front", 1.9}};
+  const fs::path dir = kWork / "dimensions";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path file = dir / "case.json";
+  std::ofstream(file) << c.dump();
+  REQUIRE(run_argv({"plot", file.string(), "-o", (dir / "out").string()}).status == 0);
+  const std::string script = slurp(dir / "out" / "collision_1.gp");
+  CHECK(script.find("stand-in") != std::string::npos);  // vehicle 2 still has none
+  // Block 0 of the data: vehicle 1's outline in plan. Figure 8's Malibu is level at yaw 0: x from the
+  // CG - 2.9 to the CG + 1.9, y the CG +- 0.9.
+  std::istringstream in(slurp(dir / "out" / "collision_1.dat"));
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (std::string line; std::getline(in, line) && !line.empty();) {
+    const double x = std::stod(line), y = std::stod(line.substr(line.find(',') + 1));
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+  const auto rows = arrows(slurp(dir / "out" / "collision_1.arrows.csv"));
+  const auto& cg = rows.at("vehicle 1 velocity before").from;
+  CHECK(std::fabs(x1 - cg[0] - 1.9) <= 1e-14);
+  CHECK(std::fabs(cg[0] - x0 - 2.9) <= 1e-14);
+  CHECK(std::fabs(y1 - cg[1] - 0.9) <= 1e-14);
+  CHECK(std::fabs(cg[1] - y0 - 0.9) <= 1e-14);
 }

@@ -204,5 +204,7 @@ TEST_CASE("a head-on case (no contact-plane impulse) plots every figure without 
       ++figures;
       CHECK(fs::file_size(e.path()) > 1000);
     }
-  CHECK(figures == 11);  // contact plane, 3 solution planes, impulse space, 2 sweeps x 3 strategies
+  // Contact plane, impulse space; per strategy (three of different kinds) a solution plane, two sweeps
+  // and a collision diagram.
+  CHECK(figures == 14);
 }

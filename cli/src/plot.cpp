@@ -21,6 +21,7 @@ std::string plot(const io::CaseSpec& spec, const PlotOptions& o) {
   for (std::size_t k = 0; k < a.solutions.size(); ++k) solution_plane_view(c, k);
   impulse_space_view(c);
   sweeps(c);
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) collision_view(c, k);
   std::fputs(c.warnings.c_str(), stderr);
   return c.written;
 }

@@ -13,10 +13,15 @@ constexpr double kMarkerSize = 1.6, kMarkerGrowth = 0.9;
 constexpr double kSvgMarkerScale = 0.7;  // gnuplot's SVG points are larger than cairo's at one size
 }  // namespace
 
-std::string figure_head(const FigureContext& c, const std::string& title, int w, int h, const std::vector<std::string>& more,
-                        const char* key) {
+std::string title_lines(const FigureContext& c, const std::string& title, const std::vector<std::string>& more) {
   std::string lines = gnuplot_string(c.spec.name) + ".\"\\n\"." + gnuplot_string(title);
   for (const auto& line : more) lines += ".\"\\n\"." + gnuplot_string(line);
+  return lines;
+}
+
+std::string figure_head(const FigureContext& c, const std::string& title, int w, int h, const std::vector<std::string>& more,
+                        const char* key) {
+  const std::string lines = title_lines(c, title, more);
   // clip two: a line whose two ends lie beyond the range is still drawn where it crosses it.
   return gnuplot_terminal(c.o.png, w, h) +
          "set datafile separator comma\nset grid\nset clip two\n" + key +

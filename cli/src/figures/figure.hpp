@@ -33,6 +33,9 @@ struct FigureContext {
 // Terminal, title (the case's name, the figure's, then one line per further line given), grid and a key
 // beside the plot, one entry a line: below it, gnuplot lays wide entries out in columns that can fall
 // off the page.
+// The title's lines as one gnuplot string expression: the case's name, `title`, then `more`.
+std::string title_lines(const FigureContext& c, const std::string& title, const std::vector<std::string>& more = {});
+
 inline constexpr const char* kKeyBeside = "set key outside right top vertical Left reverse noenhanced\n";
 std::string figure_head(const FigureContext& c, const std::string& title, int w, int h,
                         const std::vector<std::string>& more = {}, const char* key = kKeyBeside);

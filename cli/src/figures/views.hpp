@@ -11,5 +11,6 @@ void contact_plane_view(FigureContext& c);                // plane_views.cpp
 void solution_plane_view(FigureContext& c, std::size_t k);  // plane_views.cpp
 void impulse_space_view(FigureContext& c);                // space_view.cpp
 void sweeps(FigureContext& c);                            // sweeps.cpp
+void collision_view(FigureContext& c, std::size_t k);     // collision_view.cpp
 
 }  // namespace impact3d::cli

@@ -246,7 +246,7 @@ class Reader {
 
   VehicleSpec vehicle(const JsonValue& v, const Where& at) const {
     object(v, at, {"name", "mass", "inertia", "orientation_deg", "orientation_matrix", "velocity", "angular_velocity",
-                   "impulse_center"});
+                   "impulse_center", "dimensions"});
     VehicleSpec veh;
     if (auto* n = optional(v, "name")) veh.name = string(*n, Where(at, "name"));
     veh.mass = positive(required(v, at, "mass"), Where(at, "mass"));
@@ -275,7 +275,22 @@ class Reader {
     veh.velocity = vector3(required(v, at, "velocity"), Where(at, "velocity"));
     veh.angular_velocity = vector3_or_zero(v, at, "angular_velocity");
     veh.impulse_center = vector3(required(v, at, "impulse_center"), Where(at, "impulse_center"));
+    if (const JsonValue* d = optional(v, "dimensions")) veh.dimensions = dimensions(*d, Where(at, "dimensions"));
     return veh;
+  }
+
+  DimensionsSpec dimensions(const JsonValue& v, const Where& at) const {
+    object(v, at, {"length", "width", "height", "cg_to_front"});
+    DimensionsSpec d;
+    d.length = positive(required(v, at, "length"), Where(at, "length"));
+    d.width = positive(required(v, at, "width"), Where(at, "width"));
+    if (const JsonValue* h = optional(v, "height")) d.height = positive(*h, Where(at, "height"));
+    if (const JsonValue* f = optional(v, "cg_to_front")) {
+      d.cg_to_front = positive(*f, Where(at, "cg_to_front"));
+      if (!(d.cg_to_front->value < d.length.value))
+        fail(Where(at, "cg_to_front"), fmt::format("must be less than the length (got {})", d.cg_to_front->text));
+    }
+    return d;
   }
 
   ContactSpec contact(const JsonValue& v, const Where& at) const {

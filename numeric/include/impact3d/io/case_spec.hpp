@@ -31,6 +31,12 @@ struct Number {
 
 using Vector3 = std::array<Number, 3>;
 
+// The vehicle's box for the collision diagram (no part of the mechanics), in length units.
+struct DimensionsSpec {
+  Number length, width;
+  std::optional<Number> height, cg_to_front;  // default: none drawn in elevation; length / 2
+};
+
 struct VehicleSpec {
   std::string name;
   Number mass;
@@ -42,6 +48,7 @@ struct VehicleSpec {
   std::optional<std::array<Vector3, 3>> orientation_matrix;
   std::string orientation_path;
   Vector3 velocity, angular_velocity, impulse_center;
+  std::optional<DimensionsSpec> dimensions;
 };
 
 struct ContactSpec {
