@@ -208,3 +208,30 @@ TEST_CASE("a head-on case (no contact-plane impulse) plots every figure without 
   // and a collision diagram.
   CHECK(figures == 14);
 }
+
+TEST_CASE("report: the case author's text is escaped into the page, never markup", "[report][hostile]") {
+  const fs::path dir = kWork / "report_hostile";
+  fs::create_directories(dir);
+  auto c = nlohmann::json::parse(slurp(fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json"));
+  c["name"] = "</title><script>alert(1)</script>";
+  c["description"] = "<img src=x onerror=alert(2)> & \"quoted\"";
+  c["vehicles"][0]["name"] = "a'b<i>";
+  std::ofstream(dir / "case.json") << c.dump();
+  const Run r = run_argv({"report", "case.json", "-o", "page.html", "--no-figures"}, dir.string());
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  CHECK(r.out == "page.html\n");
+  const std::string page = slurp(dir / "page.html");
+  CHECK(page.find("<script") == std::string::npos);
+  CHECK(page.find("<img") == std::string::npos);  // no figures asked for, and the description's is text
+  CHECK(page.find("&lt;/title&gt;&lt;script&gt;alert(1)&lt;/script&gt;") != std::string::npos);
+  CHECK(page.find("&lt;img src=x onerror=alert(2)&gt; &amp; &quot;quoted&quot;") != std::string::npos);
+  CHECK(page.find("a&#39;b&lt;i&gt;") != std::string::npos);
+  CHECK(page.find("Figures left out (--no-figures).") != std::string::npos);
+  // Exact arithmetic has no page; the refusal names the option, and nothing is written.
+  const Run exact = run_argv({"report", "case.json", "-o", "exact.html", "--precision", "exact"}, dir.string());
+  CHECK(exact.status == 1);
+  CHECK(exact.out.empty());
+  CHECK(exact.err.find("--precision") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "exact.html"));
+}

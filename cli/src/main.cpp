@@ -15,6 +15,7 @@
 #include "batch.hpp"
 #include "montecarlo.hpp"
 #include "plot.hpp"
+#include "report.hpp"
 #include "sensitivity.hpp"
 #include "user_error.hpp"
 
@@ -195,6 +196,22 @@ int main(int argc, char** argv) {
   plot_cmd->add_option("case", plot_case, "case file (JSON)")->required();
   plot_cmd->add_option("-o,--output", popt.out_dir, "directory for the figures, their scripts and data")->required();
   plot_cmd->add_flag("--png", popt.png, "PNG instead of SVG");
+  std::string plot_units;
+  plot_cmd->add_option("--units", plot_units, "units drawn: SI, US or metric-kmh (default: the case's)")
+      ->check(CLI::IsMember({"SI", "US", "metric-kmh"}));
+  auto* report_cmd = app.add_subcommand("report", "the case as one self-contained HTML page: summary, warnings, figures");
+  impact3d::cli::ReportOptions ropt;
+  std::string report_units, report_engine = "generated";
+  report_cmd->add_option("case", ropt.case_path, "case file (JSON)")->required();
+  report_cmd->add_option("-o,--output", ropt.out_file, "the HTML file to write")->required();
+  report_cmd->add_option("--precision", ropt.precision, "arithmetic (default double)")
+      ->check(CLI::IsMember(impact3d::io::precision_names()));
+  report_cmd->add_option("--digits", ropt.digits, "significant digits shown (default 10 at double)")->check(CLI::Range(1, 200));
+  report_cmd->add_option("--units", report_units, "units shown: SI, US or metric-kmh (default: the case's)")
+      ->check(CLI::IsMember({"SI", "US", "metric-kmh"}));
+  report_cmd->add_option("--engine", report_engine, "generated (default) or direct")->check(CLI::IsMember({"generated", "direct"}));
+  bool no_figures = false;
+  report_cmd->add_flag("--no-figures", no_figures, "leave the figures out (no gnuplot run)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -207,8 +224,18 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "impact3d: usage: %s (impact3d --help)\n", impact3d::io::printable(what).c_str());
     return kUsage;
   }
+  if (report_cmd->parsed())
+    return guarded(ropt.case_path, [&] {
+      if (!report_units.empty()) ropt.units = impact3d::units_named(report_units);
+      ropt.engine = report_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
+      ropt.figures = !no_figures;
+      const std::string written = impact3d::cli::report(ropt);
+      std::fputs(written.c_str(), stdout);
+      return 0;
+    });
   if (plot_cmd->parsed())
     return guarded(plot_case, [&] {
+      if (!plot_units.empty()) popt.units = impact3d::units_named(plot_units);
       const auto spec = impact3d::io::read_case(impact3d::io::read_text_file(plot_case));
       const std::string written = naming_strategies(spec, [&] { return impact3d::cli::plot(spec, popt); });
       std::fputs(written.c_str(), stdout);

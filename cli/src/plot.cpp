@@ -15,8 +15,9 @@ std::string plot(const io::CaseSpec& spec, const PlotOptions& o) {
   const Analysis<double> a = analyze(scene, io::to_strategies<double>(spec), o.engine);
   const OutputDir dir(o.out_dir);
   const Figures<double> fig = figures(a);
-  FigureContext c{spec, o, dir, scene, a, a.problem(), fig, unit_factors<double>(spec.units),
-                  io::unit_label(spec.units, "impulse"), io::unit_label(spec.units, "velocity"), io::unit_label(spec.units, "energy"), "", ""};
+  const Units u = o.units.value_or(spec.units);
+  FigureContext c{spec, o, dir, scene, a, a.problem(), fig, u, unit_factors<double>(u),
+                  io::unit_label(u, "impulse"), io::unit_label(u, "velocity"), io::unit_label(u, "energy"), "", ""};
   contact_plane_view(c);
   for (std::size_t k = 0; k < a.solutions.size(); ++k) solution_plane_view(c, k);
   impulse_space_view(c);

@@ -3,10 +3,12 @@
 // eps, for any case, from the same computation as `solve`, drawn by gnuplot.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "impact3d/io/case_spec.hpp"
 #include "impact3d/numeric/problem.hpp"
+#include "impact3d/numeric/units.hpp"
 
 namespace impact3d::cli {
 
@@ -14,6 +16,7 @@ struct PlotOptions {
   std::string out_dir;
   bool png = false;
   Engine engine = Engine::generated;
+  std::optional<Units> units;  // the units drawn; empty: the case's
 };
 
 // Writes, per figure, NAME.gp (the script), NAME*.dat (the data drawn), NAME.points.csv (the solution

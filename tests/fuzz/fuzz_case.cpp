@@ -1,7 +1,8 @@
 // libFuzzer harness: any bytes as a case file, read and, when valid, solved at every precision and
-// written as the result document, and differentiated (`sensitivity`) and written; the reader must
-// reject or the solve must finish, never crash or hang. Every number's value must be its text
-// correctly rounded, since the double engine reads the value (to_scene.hpp) and the others the text.
+// written as the result document and the HTML page, and differentiated (`sensitivity`) and written;
+// the reader must reject or the solve must finish, never crash or hang. Every number's value must be
+// its text correctly rounded, since the double engine reads the value (to_scene.hpp) and the others
+// the text.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -11,6 +12,7 @@
 
 #include "impact3d/io/case_numbers.hpp"
 #include "impact3d/io/read_case.hpp"
+#include "impact3d/io/report_html.hpp"
 #include "impact3d/io/scalar_text.hpp"
 #include "impact3d/io/sensitivity.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
@@ -24,6 +26,7 @@ void solve_at(const impact3d::io::CaseSpec& spec, impact3d::Engine engine) {
   try {
     const auto a = analyze(io::to_scene<Scalar>(spec), io::to_strategies<Scalar>(spec), engine);
     (void)io::result_json(spec, a, "fuzz");
+    (void)io::report_html(spec, a, "fuzz", 10, {}, "");
   } catch (const io::CaseError&) {
   } catch (const SolveError&) {
   }

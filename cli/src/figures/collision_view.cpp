@@ -90,7 +90,7 @@ void collision_view(FigureContext& c, std::size_t k) {
   bool stand_in = false, tilted = false;
   for (int i = 0; i < 2; ++i) {
     const auto& b = c.scene.body[i];
-    box[i] = box_of(c.spec.vehicles[i], b.p_CgIc_B, fl);
+    box[i] = box_of(c.spec.vehicles[i], b.p_CgIc_B, unit_factors<double>(c.spec.units).length);  // dimensions: case units
     stand_in = stand_in || box[i].stand_in;
     cg[i] = -(b.R_WB * b.p_CgIc_B) / fl;
     longest = std::max(longest, (box[i].front - box[i].rear) / fl);
@@ -175,7 +175,7 @@ void collision_view(FigureContext& c, std::size_t k) {
   }
   c.dir.write(name + ".dat", dat);
 
-  const std::string length_unit = io::unit_label(c.spec.units, "length");
+  const std::string length_unit = io::unit_label(c.units, "length");
   std::vector<std::string> notes{fmt::format("arrows to scale: 1 {} of velocity = {:.3g} {}; the impulse on vehicle 1 ({:.6g} {}) = {:.3g} {}",
                                              c.vel_unit, vscale, length_unit, pnorm, c.imp_unit, pnorm * pscale, length_unit)};
   if (stand_in) notes.push_back("stand-in boxes (4.5 m x 1.8 m about the CG, reaching the impulse centre): the case gives no dimensions");

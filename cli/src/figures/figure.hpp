@@ -23,7 +23,8 @@ struct FigureContext {
   const Analysis<double>& a;
   const Problem<double>& p;
   const Figures<double>& fig;  // the geometry drawn, from the analysis (impulse_space.hpp)
-  UnitFactors<double> f;
+  Units units;                 // drawn in; the case's own unless asked otherwise
+  UnitFactors<double> f;       // of `units`
   std::string imp_unit, vel_unit, energy_unit;
   std::string written, warnings;
 

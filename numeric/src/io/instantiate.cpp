@@ -4,6 +4,7 @@
 
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/io/render.hpp"
+#include "impact3d/io/report_html.hpp"
 #include "impact3d/io/report_text.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
@@ -32,6 +33,7 @@ std::string render(const CaseSpec& spec, const RenderOptions& o) {
   }
   if (o.format == "json" || o.format == "jsonl") return result_json(*shown, a, precision, 0, false, {}, o.format == "jsonl", o.pick);
   const int digits = o.digits > 0 ? o.digits : std::numeric_limits<Scalar>::digits10;
+  if (o.format == "html") return report_html(*shown, a, precision, digits, o.figures ? *o.figures : std::vector<ReportFigure>{}, o.figures_note);
   return report_text(*shown, a, precision, digits);
 }
 

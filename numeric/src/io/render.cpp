@@ -23,6 +23,8 @@ std::string render(const CaseSpec& spec, std::string_view precision, const Rende
   if (o.units && *o.units != spec.units && precision == "exact")
     // Exact results are fractions of the case's own units; deg/s and km/h would make them irrational.
     throw CaseError("--units", fmt::format("exact results are written in the case's units ({})", units_name(spec.units)));
+  if (o.format == "html" && precision == "exact")
+    throw CaseError("--precision", "the HTML report is written at a floating precision; exact results: impact3d solve --precision exact");
 #if IMPACT3D_MULTIPRECISION
   if (precision == "exact") return render_exact(spec, o);
 #endif

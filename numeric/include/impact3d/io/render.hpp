@@ -8,18 +8,21 @@
 
 #include "impact3d/io/case_spec.hpp"
 #include "impact3d/io/json_pick.hpp"
+#include "impact3d/io/report_figure.hpp"
 #include "impact3d/numeric/problem.hpp"
 #include "impact3d/numeric/scalars.hpp"
 
 namespace impact3d::io {
 
 struct RenderOptions {
-  std::string format = "text";  // "text" | "json" | "jsonl" (the JSON document on one line)
+  std::string format = "text";  // "text" | "json" | "jsonl" (the JSON document on one line) | "html"
   int digits = 0;               // text report; 0 = the precision's digits10
   Engine engine = Engine::generated;
   JsonPick* pick = nullptr;  // json, jsonl: where the values it names are written (json_pick.hpp)
   std::vector<WarningSet>* warning_codes = nullptr;  // when given: each result's warnings as codes
   std::optional<Units> units;  // the unit system written; empty: the case's
+  const std::vector<ReportFigure>* figures = nullptr;  // html: the figures placed on the page
+  std::string figures_note;                            // html: said above them (e.g. why there are none)
 };
 
 // Throws CaseError for inputs that fail the arithmetic checks, SolveError for no solution.

@@ -9,74 +9,13 @@
 #include <fmt/format.h>
 
 #include "impact3d/io/escape.hpp"
+#include "impact3d/io/report_summary.hpp"
 #include "impact3d/io/present.hpp"
 #include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/io/text_table.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
 namespace impact3d::io {
-
-
-template <typename Scalar>
-struct ReportCells {
-  const Present<Scalar>& p;
-  // A post-impact relative velocity inside the rounding bound is zero: say so instead of printing noise.
-  std::string vel(const Solution<Scalar>& s, const Scalar& v) const {
-    using std::abs;
-    if (abs(v) > s.velocity_roundoff || !is_finite(s.velocity_roundoff)) return p.num(v, p.f.velocity);
-    return "0 (|x| < " + io::scalar_to_text(Scalar(s.velocity_roundoff / p.f.velocity), 1) + ")";
-  }
-  std::string opt(const std::optional<Scalar>& v) const { return v ? p.num(*v) : std::string("-"); }
-  std::string opt(const std::optional<Scalar>& v, const Scalar& factor) const {
-    return v ? p.num(*v, factor) : std::string("-");
-  }
-};
-
-// The summary of one strategy: what a reconstruction is compared against, per vehicle and for the pair.
-template <typename Scalar>
-void summary_block(Table& t, const CaseSpec& c, const Solution<Scalar>& s, const std::string& label,
-                   const Present<Scalar>& p) {
-  const auto& f = p.f;
-  const ReportCells<Scalar> cell{p};
-  const auto U = [&](const char* q) { return std::string(" [") + unit_label(c.units, q) + "]"; };
-  const auto& imp = s.impulse;
-  t.heading(label);
-  t.row("regime", {std::string(regime_name(imp.regime))});
-  if (imp.mu) t.row("impulse ratio used", {p.num(*imp.mu)});
-  if (imp.mu_t) t.row("impulse ratios used, t and z", {p.num(*imp.mu_t), p.num(*imp.mu_z)});
-  if (imp.gir) t.row("GIR (eqs 14, 20)", {p.num(*imp.gir)});
-  if (imp.cir) t.row("CIR (eq 19)", {p.num(*imp.cir)});
-  t.row("impulse on vehicle 1 (n, t, z)" + U("impulse"), p.vec(imp.P_C, f.impulse));
-  t.row("", {"vehicle 1", "vehicle 2"});
-  auto both = [&](const std::string& name, auto value) { t.row(name, {value(0), value(1)}); };
-  both("Delta-V" + U("velocity"), [&](int i) { return p.num(s.change[i].dv, f.velocity); });
-  both("  longitudinal (+ forward)", [&](int i) { return p.num(s.motion[i].dv_B.x(), f.velocity); });
-  both("  lateral (+ left)", [&](int i) { return p.num(s.motion[i].dv_B.y(), f.velocity); });
-  both("  vertical (+ up)", [&](int i) { return p.num(s.motion[i].dv_B.z(), f.velocity); });
-  both("PDOF [deg] (clock)", [&](int i) {
-    const auto& ch = s.change[i];
-    return ch.pdof_deg ? fmt::format("{} ({})", p.num(*ch.pdof_deg), *ch.clock) : std::string("-");
-  });
-  both("speed after" + U("velocity"), [&](int i) { return p.num(s.motion[i].speed_after, f.velocity); });
-  both("heading after [deg]", [&](int i) { return cell.opt(s.motion[i].heading_after_deg); });
-  both("yaw rate after [deg/s]", [&](int i) { return p.num(Scalar(degrees(s.motion[i].yaw_rate_after))); });
-  both("deformation energy" + U("energy"), [&](int i) { return p.num(s.deformation.energy[i], f.energy); });
-  both("EES" + U("velocity"), [&](int i) { return cell.opt(s.deformation.ees[i], f.velocity); });
-  t.row("sliding before" + U("velocity"), {p.num(s.sliding_before, f.velocity)});
-  t.row("sliding after: along, across" + U("velocity"),
-        {s.sliding_along ? cell.vel(s, *s.sliding_along) : std::string("-"),
-         s.swerve_speed ? cell.vel(s, *s.swerve_speed) : std::string("-")});
-  t.row("swerve off the sliding line [deg]", {cell.opt(s.swerve_deg)});
-  t.row("sliding reversed", {s.reversed ? (*s.reversed ? "yes" : "no") : "-"});
-  t.row("energy before, after, lost" + U("energy"),
-        {p.num(s.energy_before, f.energy), p.num(s.energy_after, f.energy), p.num(s.energy_loss, f.energy)});
-  const auto& m = s.momentum;
-  t.row("momentum residual / bound: linear, angular 1, 2", {io::scalar_to_text(m.linear_residual, 2), io::scalar_to_text(m.angular_residual[0], 2),
-                                            io::scalar_to_text(m.angular_residual[1], 2)});
-  t.row("impulse rounding bound, relative", {io::scalar_to_text(s.rounding_bound, 2)});
-  if (s.warnings.empty()) t.row("warnings", {"none"});
-  for (const auto& w : s.warnings) t.note("WARNING: ", w.text);
-}
 
 template <typename Scalar>
 std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, int digits) {
@@ -104,7 +43,13 @@ std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   sum.heading(fmt::format("Summary (restitution eps = {}; yaw rates in deg/s; EES from the energy lost, split "
                           "{}: vehicle 1 {}, vehicle 2 {})",
                           c.restitution.text, how, p.num(share[0]), p.num(share[1])));
-  for (std::size_t k = 0; k < a.solutions.size(); ++k) summary_block(sum, c, a.solutions[k], head[k], p);
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) {
+    sum.heading(head[k]);
+    const auto& s = a.solutions[k];
+    for (const auto& r : summary_rows(c, s, p)) sum.row(r.label, r.cells);
+    if (s.warnings.empty()) sum.row("warnings", {"none"});
+    for (const auto& w : s.warnings) sum.note("WARNING: ", w.text);
+  }
   out += sum.str();
 
   Table cs;
