@@ -13,6 +13,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -24,6 +25,23 @@ inline std::string slurp(const std::filesystem::path& p) {
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+// The rows after the header of a CSV the program writes beside a figure: a label, then numbers.
+inline std::vector<std::pair<std::string, std::vector<double>>> labelled_rows(const std::string& csv) {
+  std::vector<std::pair<std::string, std::vector<double>>> rows;
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::stringstream ss(line);
+    std::string cell, label;
+    std::getline(ss, label, ',');
+    std::vector<double> v;
+    while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
+    rows.push_back({label, v});
+  }
+  return rows;
 }
 
 struct Run {

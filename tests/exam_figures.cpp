@@ -67,13 +67,7 @@ std::string six(double x) { return fmt::format("{:.6g}", x); }
 // The rows of a "label,value" file after its header.
 std::vector<std::pair<std::string, double>> rows(const std::string& csv) {
   std::vector<std::pair<std::string, double>> out;
-  std::istringstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    const auto comma = line.rfind(',');
-    out.push_back({line.substr(0, comma), std::stod(line.substr(comma + 1))});
-  }
+  for (const auto& [label, v] : labelled_rows(csv)) out.push_back({label, v.at(0)});
   return out;
 }
 
@@ -317,15 +311,7 @@ struct ArrowRow {
 };
 std::map<std::string, ArrowRow> arrows(const std::string& csv) {
   std::map<std::string, ArrowRow> out;
-  std::istringstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string label, cell;
-    std::getline(ss, label, ',');
-    std::vector<double> v;
-    while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
+  for (const auto& [label, v] : labelled_rows(csv)) {
     REQUIRE(v.size() == 7);
     out[label] = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6]};
   }

@@ -26,21 +26,7 @@ namespace {
 const fs::path kWork = fs::temp_directory_path() / fmt::format("impact3d-plot-{}", ::getpid());
 
 // Rows of NAME.points.csv after the header: label and numbers.
-std::vector<std::pair<std::string, std::vector<double>>> points(const fs::path& p) {
-  std::vector<std::pair<std::string, std::vector<double>>> rows;
-  std::istringstream in(slurp(p));
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string cell, label;
-    std::getline(ss, label, ',');
-    std::vector<double> v;
-    while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
-    rows.push_back({label, v});
-  }
-  return rows;
-}
+std::vector<std::pair<std::string, std::vector<double>>> points(const fs::path& p) { return labelled_rows(slurp(p)); }
 
 // A drawn point against solve's number: both are doubles printed with 17 significant digits, which read
 // back exactly; the plot's own hypot or unit factor may round once more than solve's: 4 eps of the value
