@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "impact3d/io/read_case.hpp"
+#include "impact3d/numeric/certified.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 
@@ -67,6 +68,17 @@ void solve_exact(benchmark::State& state) {
   state.counters["cases/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+// Ball arithmetic at state.range(0) bits (issue 14): the same analyze per strategy under a decision log,
+// and once more for each decision the balls leave undecided (Figure 8's Full Impact has two: its final
+// sliding is exactly -e times the initial, a zero no ball can prove). Compare with solve<float100>.
+void solve_certified(benchmark::State& state) {
+  const BallBits bits(state.range(0));
+  const Scene<Ball> s = io::to_scene<Ball>(spec());
+  const auto st = io::to_strategies<Ball>(spec());
+  for (auto _ : state) benchmark::DoNotOptimize(certified_analyze(s, st));
+  state.counters["cases/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
 template <typename T>
 void result_json(benchmark::State& state) {
   const auto a = analyze(io::to_scene<T>(spec()), io::to_strategies<T>(spec()));
@@ -93,6 +105,7 @@ BENCHMARK(solve<mp::float50, Engine::direct>);
 BENCHMARK(solve<mp::float100, Engine::generated>);
 BENCHMARK(solve<mp::float100, Engine::direct>);
 BENCHMARK(solve_exact);
+BENCHMARK(solve_certified)->Arg(128)->Arg(256)->Arg(512);
 BENCHMARK(result_json<double>);
 BENCHMARK(result_json<mp::float100>);
 

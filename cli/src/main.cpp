@@ -101,10 +101,15 @@ int main(int argc, char** argv) {
                         "significant digits in the text report (default 10 at double, else every digit the "
                         "precision holds; JSON always prints them all)")
       ->check(CLI::Range(1, 110));
+  std::string precision_list;
+  for (const auto& name : impact3d::io::precision_names()) precision_list += name + ", ";
   solve_cmd->add_option("--precision", precision,
-                        "arithmetic, one of those listed (numbers name decimal digits; exact: fractions where the "
-                        "result is rational, beside the 100-digit solve)")
-      ->check(CLI::IsMember(impact3d::io::precision_names()));
+                        "arithmetic: " + precision_list +
+                            "certified or certified:BITS (numbers name decimal digits; exact: fractions where the "
+                            "result is rational, beside the 100-digit solve; certified: ball arithmetic that encloses "
+                            "every result and decides every branch or says it cannot, BITS 16 to 8192, default 256 "
+                            "and more while a decision is undecided)")
+      ->check([](const std::string& name) { return impact3d::io::precision_problem(name); });
   solve_cmd->add_option("--engine", engine,
                         "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
       ->check(CLI::IsMember({"generated", "direct"}));
@@ -190,6 +195,9 @@ int main(int argc, char** argv) {
   verify_cmd->add_option("--random", vopt.random, "add this many seeded random collisions (at most 100000)")
       ->check(CLI::Range(0, 100000));
   verify_cmd->add_option("--seed", vopt.seed, "seed of the random collisions (default 1)");
+  verify_cmd->add_flag("--certify", vopt.certify,
+                       "also enclose each case's exact result in ball arithmetic and prove that every precision's "
+                       "results of both engines lie within their stated rounding bounds of it");
   auto* plot_cmd = app.add_subcommand("plot", "draw the impulse-space figures and sweeps of a case (gnuplot)");
   std::string plot_case;
   impact3d::cli::PlotOptions popt;

@@ -1,5 +1,6 @@
 // libFuzzer harness: any bytes as a case file, read and, when valid, solved at every precision and
-// written as the result document and the HTML page, and differentiated (`sensitivity`) and written;
+// written as the result document and the HTML page, differentiated (`sensitivity`) and written, and
+// certified (ball arithmetic at 64 bits, JSON with its enclosures and decisions, and text);
 // the reader must reject or the solve must finish, never crash or hang. Every number's value must be
 // its text correctly rounded, since the double engine reads the value (to_scene.hpp) and the others
 // the text.
@@ -12,9 +13,11 @@
 
 #include "impact3d/io/case_numbers.hpp"
 #include "impact3d/io/read_case.hpp"
+#include "impact3d/io/render.hpp"
 #include "impact3d/io/report_html.hpp"
 #include "impact3d/io/scalar_text.hpp"
 #include "impact3d/io/sensitivity.hpp"
+#include "impact3d/numeric/ball.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 
@@ -66,6 +69,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const io::CaseError&) {
   } catch (const SolveError&) {
   }
+  for (const char* format : {"json", "text"}) {
+    try {
+      io::RenderOptions o;
+      o.format = format;
+      (void)io::render(spec, "certified:64", o);
+    } catch (const io::CaseError&) {
+    } catch (const SolveError&) {
+    }
+  }
+  flint_cleanup();  // Arb's caches (pi, powers of ten) would otherwise count as this input's leak
   try {
     (void)exact_analyze(io::to_scene<rational>(spec), io::to_strategies<rational>(spec));
   } catch (const Irrational&) {

@@ -1,5 +1,7 @@
 #include "impact3d/verification/verify.hpp"
 
+#include "certify.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -310,6 +312,11 @@ int verify(const VerifyOptions& o) {
   for_each_scalar([&]<typename T>(std::type_identity<T>) {
     if constexpr (!std::is_same_v<T, F>) run_precision<T>(std::string(precision_name<T>), cases, refs, conds, report, ok);
   });
+  if (o.certify) {
+    std::vector<std::pair<std::string, io::CaseSpec>> named;
+    for (const auto& c : cases) named.push_back({c.name, c.spec});
+    ok = certify(named, report, o.corrupt_double) && ok;
+  }
   report += ok ? "\nall bounds hold\n" : "\nFAILED: a bound is exceeded or a decision differs\n";
   std::fputs(report.c_str(), stdout);
   return ok ? 0 : 1;

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include "render_certified.hpp"
 #include "render_exact.hpp"
 
 #include "impact3d/io/render.hpp"
@@ -19,6 +20,24 @@ std::vector<std::string> precision_names() {
   return names;
 }
 
+std::string precision_problem(std::string_view precision) {
+  for (const auto& name : precision_names())
+    if (name == precision) return "";
+#if IMPACT3D_MULTIPRECISION
+  try {
+    if (certified_bits(precision)) return "";
+  } catch (const CaseError& e) {
+    return e.what();
+  }
+#endif
+  std::string list;
+  for (const auto& name : precision_names()) list += (list.empty() ? "" : ", ") + name;
+#if IMPACT3D_MULTIPRECISION
+  list += ", certified, certified:BITS";
+#endif
+  return "not a precision (" + list + ")";
+}
+
 std::string render(const CaseSpec& spec, std::string_view precision, const RenderOptions& o) {
   if (o.units && *o.units != spec.units && precision == "exact")
     // Exact results are fractions of the case's own units; deg/s and km/h would make them irrational.
@@ -27,6 +46,7 @@ std::string render(const CaseSpec& spec, std::string_view precision, const Rende
     throw CaseError("--precision", "the HTML report is written at a floating precision; exact results: impact3d solve --precision exact");
 #if IMPACT3D_MULTIPRECISION
   if (precision == "exact") return render_exact(spec, o);
+  if (const auto bits = certified_bits(precision)) return render_certified(spec, *bits, o);
 #endif
   std::string out;
   bool found = false;

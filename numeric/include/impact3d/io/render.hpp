@@ -38,6 +38,11 @@ IMPACT3D_SCALARS(IMPACT3D_EXTERN_RENDER_)
 // scalars, "exact" (fractions where the result is rational, beside the 100-digit computation).
 std::vector<std::string> precision_names();
 
+// What is wrong with a precision name `render` would refuse; empty for one it takes: those of
+// precision_names() and, with the multiprecision scalars, "certified" and "certified:BITS" (ball
+// arithmetic, numeric/ball.hpp; BITS from 16 to 8192).
+std::string precision_problem(std::string_view precision);
+
 // The case at the named precision; throws std::invalid_argument for a name precision_names() lacks.
 std::string render(const CaseSpec& spec, std::string_view precision, const RenderOptions& o);
 

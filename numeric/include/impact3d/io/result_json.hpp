@@ -41,7 +41,8 @@ void write_matrix(JsonWriter& w, const Mat3<Scalar>& m, const Present<Scalar>& p
 // `split_rule`: how the case splits the energy loss for EES ("mass", "share", "stiffness").
 template <typename Scalar>
 void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* veh, const Solution<Scalar>& s,
-                    const Present<Scalar>& p, bool snap, const std::string& split_rule = "mass") {
+                    const Present<Scalar>& p, bool snap, const std::string& split_rule = "mass",
+                    const std::function<void(JsonWriter&)>& more = {}) {
   const auto& f = p.f;
   auto snapped = [&](const Scalar& v) {
     using std::abs;
@@ -147,6 +148,7 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   w.key("warnings").begin_array();
   for (const auto& warning : s.warnings) w.string(warning.text);
   w.end_array();
+  if (more) more(w);
   w.end_object();
 }
 
@@ -154,10 +156,12 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
 // `digits`: significant digits of every number; 0 means every digit the precision holds (max_digits10).
 // `extra`, when given, writes further top-level keys (the exact fractions of --precision exact).
 // `one_line`: the document on one line (JSON Lines), else indented. `pick`: see json_writer.hpp.
+// `per_result`, when given, writes further keys into result k (the decisions of --precision certified).
 template <typename Scalar>
 std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, int digits = 0,
                         bool snap_zeros = false, const std::function<void(JsonWriter&)>& extra = {},
-                        bool one_line = false, JsonPick* pick = nullptr) {
+                        bool one_line = false, JsonPick* pick = nullptr,
+                        const std::function<void(JsonWriter&, std::size_t)>& per_result = {}) {
   const Present<Scalar> p(c.units, digits > 0 ? digits : std::numeric_limits<Scalar>::max_digits10);
   const auto& f = p.f;
   JsonWriter w(one_line, pick);
@@ -200,7 +204,9 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   w.key("results").begin_array();
   for (std::size_t k = 0; k < a.solutions.size(); ++k)
     write_solution(w, c.strategies[k], c.vehicles.data(), a.solutions[k], p, snap_zeros,
-                   c.energy_split ? c.energy_split->rule : std::string("mass"));
+                   c.energy_split ? c.energy_split->rule : std::string("mass"),
+                   per_result ? std::function<void(JsonWriter&)>([&](JsonWriter& to) { per_result(to, k); })
+                              : std::function<void(JsonWriter&)>());
   w.end_array();
   if (extra) extra(w);
   w.end_object();

@@ -53,6 +53,7 @@ Scalar scalar_from_text(const std::string& text) {
 // format_g17, at a fifth of that); the multiprecision types through a stream.
 template <typename Scalar>
 void append_scalar(std::string& out, const Scalar& x, int digits = std::max(std::numeric_limits<Scalar>::max_digits10, 1)) {
+  // A ball (numeric/ball.hpp) is written in its thread's text form (BallText), below.
   if constexpr (std::is_same_v<Scalar, double>) {
     if (digits == 17) {
       char buf[32];
@@ -68,11 +69,15 @@ void append_scalar(std::string& out, const Scalar& x, int digits = std::max(std:
       return;
     }
   }
-  std::ostringstream os;
-  os.imbue(std::locale::classic());
-  os.precision(digits);
-  os << x;
-  out += os.str();
+  if constexpr (requires { x.append_text(out, digits); }) {
+    x.append_text(out, digits);
+  } else {
+    std::ostringstream os;
+    os.imbue(std::locale::classic());
+    os.precision(digits);
+    os << x;
+    out += os.str();
+  }
 }
 
 template <typename Scalar>

@@ -54,7 +54,7 @@ Analysis<Scalar> analyze_with(const Scene<Scalar>& s, const std::vector<Strategy
       e.strategy = k;
       throw;
     }
-    flag_precision(a.solutions.back(), p.amplification);
+    flag_precision(a.solutions.back(), p.amplification, p.kappa);
   }
   if (!case_finite(a))
     for (auto& sol : a.solutions)

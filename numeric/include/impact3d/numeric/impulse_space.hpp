@@ -15,6 +15,7 @@
 
 #include <Eigen/LU>
 
+#include "impact3d/numeric/decisions.hpp"
 #include "impact3d/numeric/problem.hpp"
 
 namespace impact3d {
@@ -39,7 +40,10 @@ ImpulseSpace<Scalar> impulse_space(const Problem<Scalar>& p) {
   }
   s.restitution_offset = p.m_prime * (Scalar(1) + p.restitution) * p.V_ri.x() / p.K.row(0).norm();
   Vec3<Scalar> d = p.K.row(1).transpose().cross(p.K.row(2).transpose());
-  if (d.x() < Scalar(0)) d = -d;
+  {
+    const DecisionName<Scalar> name(decision_names::cil_direction);
+    if (d.x() < Scalar(0)) d = -d;
+  }
   s.cil_direction = d.normalized();
   return s;
 }

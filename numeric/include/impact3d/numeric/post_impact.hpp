@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "impact3d/numeric/decisions.hpp"
 #include "impact3d/numeric/kinematics.hpp"
 #include "impact3d/numeric/reconstruction.hpp"
 #include "impact3d/numeric/rounding.hpp"
@@ -47,12 +48,18 @@ BodyChange<Scalar> body_change(const RigidBody<Scalar>& before, const RigidBody<
   if constexpr (!is_exact_v<Scalar>) {  // |Delta-V| and its angle are not rational
     c.dv = c.dv_W.norm();
     const Vec3<Scalar> dv_B = before.R_WB.transpose() * c.dv_W;
+    const DecisionName<Scalar> name(decision_names::pdof);
     if (hypot(dv_B.x(), dv_B.y()) > rounding::pdof_roundoff(c.dv)) {
       // The force is along Delta-V; it comes from the side opposite to it.
       Scalar deg = degrees(Scalar(atan2(dv_B.y(), Scalar(-dv_B.x()))));
       if (deg < Scalar(0)) deg += Scalar(360);
       c.pdof_deg = deg;
-      int hour = static_cast<int>(to_double(floor(deg / Scalar(30) + ratio<Scalar>(1, 2)))) % 12;
+      const Scalar hours = deg / Scalar(30) + ratio<Scalar>(1, 2);
+      const Scalar whole = floor(hours);
+      // An enclosure's floor is its midpoint's: whether the whole ball lies in [whole, whole + 1) is the
+      // clock's decision, recorded under the PDOF's name where it is not certain.
+      if constexpr (is_enclosure_v<Scalar>) (void)(whole <= hours && hours < whole + Scalar(1));
+      int hour = static_cast<int>(to_double(whole)) % 12;
       c.clock = hour == 0 ? 12 : hour;
     }
   }
@@ -138,6 +145,7 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
   if constexpr (!is_exact_v<Scalar>) {  // sliding speeds and the swerve are not rational
     out.sliding_before = hypot(out.V_ri.y(), out.V_ri.z());
     out.sliding_after = hypot(out.V_rf.y(), out.V_rf.z());
+    const DecisionName<Scalar> name(decision_names::swerve);
     if (out.sliding_before > tol) {
       const Scalar cross = out.V_ri.y() * out.V_rf.z() - out.V_ri.z() * out.V_rf.y();
       const Scalar dot = out.V_ri.y() * out.V_rf.y() + out.V_ri.z() * out.V_rf.z();
@@ -153,9 +161,20 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
       }
     }
   }
-  out.t_change = axis_change(out.V_ri.y(), out.V_rf.y(), tol);
-  out.z_change = axis_change(out.V_ri.z(), out.V_rf.z(), tol);
-  const bool separating = out.V_rf.x() < -tol, penetrating = out.V_rf.x() > tol;
+  {
+    const DecisionName<Scalar> name(decision_names::volume);
+    out.t_change = axis_change(out.V_ri.y(), out.V_rf.y(), tol);
+  }
+  {
+    const DecisionName<Scalar> name(decision_names::z_sliding);
+    out.z_change = axis_change(out.V_ri.z(), out.V_rf.z(), tol);
+  }
+  bool separating, penetrating;
+  {
+    const DecisionName<Scalar> name(decision_names::volume);
+    separating = out.V_rf.x() < -tol;
+    penetrating = out.V_rf.x() > tol;
+  }
   if (!separating && !penetrating)
     out.volume = "max-compression plane";
   else if (out.t_change == AxisChange::stopped || out.t_change == AxisChange::none)
@@ -171,20 +190,32 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
   out.energy_after = kinetic_energy(out.after[0]) + kinetic_energy(out.after[1]);
   out.energy_loss = out.energy_before - out.energy_after;
 
-  if (!(imp.P_C.x() > Scalar(0)))
+  bool compressive;
+  {
+    const DecisionName<Scalar> name(decision_names::normal_impulse_sign);
+    compressive = imp.P_C.x() > Scalar(0);
+  }
+  if (!compressive)
     out.warnings.push_back({WarningCode::tensile_normal_impulse,
                             "normal impulse P_n <= 0: the constraints demand a pulling contact"});
   // The loss is a difference of energies of size energy_before; at restitution 1 it is zero in exact
   // arithmetic.
   const Scalar energy_roundoff = rounding::energy_roundoff(kappa, out.energy_before);
-  const bool gained = out.energy_loss < -energy_roundoff;
+  bool gained;
+  {
+    const DecisionName<Scalar> name(decision_names::energy_loss_sign);
+    gained = out.energy_loss < -energy_roundoff;
+  }
   if (gained) out.warnings.push_back({WarningCode::energy_gained, "kinetic energy gained: loss < 0"});
 
   for (int i = 0; i < 2; ++i) out.motion[i] = vehicle_motion(s.body[i], out.after[i]);
   out.deformation = deformation(s.body, s.energy_share, out.energy_loss, energy_roundoff);
   out.momentum = momentum_check(s.body, out.after);
   const auto& m = out.momentum;
-  if (m.linear_residual > Scalar(1) || m.angular_residual[0] > Scalar(1) || m.angular_residual[1] > Scalar(1))
+  if constexpr (is_enclosure_v<Scalar>) {  // 0 or infinite (reconstruction.hpp): a defect, not a decision
+    if (!m.linear_residual.finite() || !m.angular_residual[0].finite() || !m.angular_residual[1].finite())
+      out.warnings.push_back({WarningCode::momentum_residual, "the post-impact states' enclosures exclude the momentum balance"});
+  } else if (m.linear_residual > Scalar(1) || m.angular_residual[0] > Scalar(1) || m.angular_residual[1] > Scalar(1))
     out.warnings.push_back({WarningCode::momentum_residual,
                             "the post-impact states miss the momentum balance by more than its rounding bound"});
   return out;

@@ -39,11 +39,48 @@ bool trusted(const Scalar& bound) {
   return to_double(bound) <= rounding::kTrustedFraction;
 }
 
-// `amplification`: the problem's (rounding.hpp). Ratios carry their quotient's factor 1 + |V_cp / V_n|
-// besides, so the check uses the larger of the two.
+// An enclosure's width: the largest radius of the impulse's components over the impulse's size (the
+// ratios and states follow from it), infinite where any of them is not finite.
 template <typename Scalar>
-void flag_precision(Solution<Scalar>& s, const Scalar& amplification) {
-  if constexpr (!is_exact_v<Scalar>) {
+Scalar relative_radius(const Vec3<Scalar>& P) {
+  Scalar size(0), widest(0);
+  for (int k = 0; k < 3; ++k) {
+    if (!P[k].finite()) return std::numeric_limits<Scalar>::infinity();
+    size = Scalar::hull(size, abs(P[k].midpoint())).upper();
+    widest = Scalar::hull(widest, P[k].radius()).upper();
+  }
+  if (size == Scalar(0)) return widest == Scalar(0) ? Scalar(0) : std::numeric_limits<Scalar>::infinity();
+  return Scalar(widest / size).upper();
+}
+
+// An enclosure states its own width (issue 14): a wide one is flagged with the conditions that widen it,
+// the condition of K and the approach's obliquity |V_cp / V_n| (a near-grazing contact).
+template <typename Scalar>
+void flag_width(Solution<Scalar>& s, const Scalar& kappa) {
+  s.rounding_bound = relative_radius(s.impulse.P_C);
+  if (s.rounding_bound.finite() && to_double(s.rounding_bound) <= rounding::kTrustedFraction) return;
+  const Scalar obliquity = hypot(s.V_ri.y(), s.V_ri.z()) / s.V_ri.x();
+  std::ostringstream text;
+  text.precision(3);
+  text << "wide enclosure: the impulse is certified only to a relative radius of " << to_double(s.rounding_bound)
+       << " at " << EnclosureTraits<Scalar>::bits() << " bits; its conditions: kappa(K) = " << to_double(kappa)
+       << ", |V_cp / V_n| = " << to_double(obliquity)
+       << " (an ill-conditioned K or a near-grazing contact widens every enclosure); more bits narrow it";
+  s.warnings.push_back({WarningCode::rounding, text.str()});
+}
+
+// `amplification`: the problem's (rounding.hpp). Ratios carry their quotient's factor 1 + |V_cp / V_n|
+// besides, so the check uses the larger of the two. `kappa`: the condition of K, which an enclosure's
+// warning names.
+template <typename Scalar>
+void flag_precision(Solution<Scalar>& s, const Scalar& amplification, const Scalar& kappa) {
+  if constexpr (is_enclosure_v<Scalar>) {
+    if (!solution_finite(s))
+      s.warnings.push_back({WarningCode::not_finite,
+                            "not finite: an enclosure is unbounded (printed as null in JSON); it certifies nothing"});
+    flag_width(s, kappa);
+  } else if constexpr (!is_exact_v<Scalar>) {
+    (void)kappa;
     if (!solution_finite(s))
       s.warnings.push_back({WarningCode::not_finite,
                             "not finite: a result is NaN or infinite at this precision (printed as null in JSON); "

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "impact3d/numeric/decisions.hpp"
 #include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/scene.hpp"
 #include "impact3d/numeric/strategy.hpp"
@@ -62,6 +63,7 @@ struct Problem {
   // error (rounding::solve_roundoff).
   bool negligible(const Scalar& x, const Scalar& scale) const {
     if constexpr (std::numeric_limits<Scalar>::is_exact) return x == Scalar(0);
+    else if constexpr (is_enclosure_v<Scalar>) return !(x > Scalar(0));  // its radius is the rounding
     else return within(x, [&](const Scalar& k) { return rounding::solve_roundoff(k, scale); }, true);
   }
 };
@@ -75,7 +77,7 @@ Problem<Scalar> make_problem(const Scene<Scalar>& s, bool bounded = false) {
   p.K = E::coefficient_matrix(s);
   p.V_ri = relative_velocity_C(s);
   p.restitution = s.restitution;
-  if constexpr (!is_exact_v<Scalar>) p.quotient = rounding::quotient_factor(p.V_ri);
+  if constexpr (rounding::tracks_rounding_v<Scalar>) p.quotient = rounding::quotient_factor(p.V_ri);
   if (bounded && !is_exact_v<Scalar>) {
     p.kappa_bound = rounding::spd_condition_bound(p.K);
     p.amplification_bound = rounding::amplification_bound(s, p.V_ri.x(), p.kappa_bound);
@@ -93,6 +95,7 @@ Problem<Scalar> make_problem(const Scene<Scalar>& s, bool bounded = false) {
 // The bodies approach at the impulse centre (V_rn > 0), or there is no impact to solve.
 template <typename Scalar>
 bool approaching(const Problem<Scalar>& p) {
+  const DecisionName<Scalar> name(decision_names::approach);
   return p.V_ri.x() > Scalar(0);
 }
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/decisions.hpp"
 #include "impact3d/numeric/rounding.hpp"
 
 namespace impact3d {
@@ -37,6 +38,7 @@ VehicleMotion<Scalar> vehicle_motion(const RigidBody<Scalar>& before, const Rigi
     m.speed_after = after.v_W.norm();
     // v after = v + P/m, a sum of terms of at most |v| and |Delta-V|.
     const Scalar noise = rounding::arithmetic_roundoff(Scalar(before.v_W.norm() + m.dv_B.norm()));
+    const DecisionName<Scalar> name(decision_names::heading_after);
     if (hypot(after.v_W.x(), after.v_W.y()) > noise)
       m.heading_after_deg = degrees(Scalar(atan2(after.v_W.y(), after.v_W.x())));
   }
@@ -72,6 +74,7 @@ Deformation<Scalar> deformation(const std::array<RigidBody<Scalar>, 2>& body,
                                 const Scalar& roundoff) {
   Deformation<Scalar> d;
   d.share = energy_share(body, given);
+  const DecisionName<Scalar> name(decision_names::energy_loss_sign);
   const Scalar lost = loss > Scalar(0) ? loss : Scalar(0);
   for (int i = 0; i < 2; ++i) {
     d.energy[i] = d.share[i] * lost;
@@ -120,6 +123,14 @@ Scalar matrix_norm1(const Mat3<Scalar>& J) {
   }
   return m;
 }
+// An enclosure's residual: 0 when every component's enclosure holds zero, as the exact balance does;
+// infinite otherwise, a defect of the program (the balance is proven violated).
+template <typename Scalar>
+Scalar enclosure_residual(const Vec3<Scalar>& r) {
+  for (int k = 0; k < 3; ++k)
+    if (!r[k].contains_zero()) return std::numeric_limits<Scalar>::infinity();
+  return Scalar(0);
+}
 // residual / bound. In exact arithmetic the balance is an identity of the rational operations, so a
 // residual there is a defect of the program, not of the case.
 template <typename Scalar>
@@ -144,6 +155,15 @@ MomentumCheck<Scalar> momentum_check(const std::array<RigidBody<Scalar>, 2>& bef
   m.linear_after_W = after[0].mass * after[0].v_W + after[1].mass * after[1].v_W;
   Scalar scale(0);
   for (int i = 0; i < 2; ++i) scale += before[i].mass * (d::norm1(before[i].v_W) + d::norm1(after[i].v_W));
+  if constexpr (is_enclosure_v<Scalar>) {
+    m.linear_residual = d::enclosure_residual(Vec3<Scalar>(m.linear_after_W - m.linear_before_W));
+    for (int i = 0; i < 2; ++i) {
+      m.angular_before_B[i] = d::angular_about_Ic_B(before[i]);
+      m.angular_after_B[i] = d::angular_about_Ic_B(after[i]);
+      m.angular_residual[i] = d::enclosure_residual(Vec3<Scalar>(m.angular_after_B[i] - m.angular_before_B[i]));
+    }
+    return m;
+  }
   m.linear_residual = d::over_bound(d::norm_inf(Vec3<Scalar>(m.linear_after_W - m.linear_before_W)),
                                     rounding::momentum_roundoff(scale));
   for (int i = 0; i < 2; ++i) {

@@ -41,6 +41,11 @@
 
 namespace impact3d::rounding {
 
+// Whether the model below applies: exact types do not round, and an enclosure (ball.hpp) carries its
+// own rounding in its radius.
+template <typename Scalar>
+inline constexpr bool tracks_rounding_v = !is_exact_v<Scalar> && !is_enclosure_v<Scalar>;
+
 // ---- Results ------------------------------------------------------------------------------------------
 
 // The roundings on each path from the decimal inputs to an impulse that do not cancel: the solve's
@@ -59,6 +64,8 @@ template <typename Scalar>
 Scalar spd_condition(const Mat3<Scalar>& M) {
   if constexpr (is_exact_v<Scalar>) {
     return Scalar(1);
+  } else if constexpr (is_enclosure_v<Scalar>) {
+    return EnclosureTraits<Scalar>::spd_condition(M);
   } else {
     Eigen::SelfAdjointEigenSolver<Mat3<Scalar>> eig(M, Eigen::EigenvaluesOnly);
     const Scalar lo = eig.eigenvalues().minCoeff(), hi = eig.eigenvalues().maxCoeff();
@@ -74,6 +81,8 @@ template <typename Scalar>
 Scalar spd_condition_bound(const Mat3<Scalar>& M) {
   if constexpr (is_exact_v<Scalar>) {
     return Scalar(1);
+  } else if constexpr (is_enclosure_v<Scalar>) {
+    return EnclosureTraits<Scalar>::spd_condition(M);
   } else {
     using std::sqrt;
     const Scalar a = M(0, 0), b = M(0, 1), c = M(0, 2), d = M(1, 1), e = M(1, 2), f = M(2, 2);
@@ -92,7 +101,7 @@ Scalar spd_condition_bound(const Mat3<Scalar>& M) {
 // and the normal approach speed V_rn (> 0 for an impact); infinite where either condition is.
 template <typename Scalar>
 Scalar amplification_of(const Scene<Scalar>& s, const Scalar& V_rn, const Scalar& kappa_K, const Scalar& cond_J) {
-  if constexpr (is_exact_v<Scalar>) {
+  if constexpr (!tracks_rounding_v<Scalar>) {
     return Scalar(1);
   } else {
     using std::max;
@@ -128,6 +137,7 @@ Scalar inertia_condition(const Mat3<Scalar>& J) {
 // The amplification A above; exact arithmetic has nothing to amplify.
 template <typename Scalar>
 Scalar amplification(const Scene<Scalar>& s, const Scalar& kappa_K) {
+  if constexpr (!tracks_rounding_v<Scalar>) return Scalar(1);
   using std::max;
   return amplification_of(s, Scalar(relative_velocity_C(s).x()), kappa_K,
                           Scalar(max(inertia_condition(s.body[0].J_B), inertia_condition(s.body[1].J_B))));
@@ -154,7 +164,7 @@ Scalar quotient_factor(const Vec3<Scalar>& V_ri) {
 // is kappa(K), to the conditioning of J.
 template <typename Scalar>
 Scalar relative_bound(const Scalar& amplification) {
-  if constexpr (is_exact_v<Scalar>) return Scalar(0);
+  if constexpr (!tracks_rounding_v<Scalar>) return Scalar(0);
   else return Scalar(kResultRoundings) * std::numeric_limits<Scalar>::epsilon() * amplification;
 }
 
@@ -162,7 +172,7 @@ Scalar relative_bound(const Scalar& amplification) {
 // and a solve) are each within relative_bound of the exact value, so within twice it of each other.
 template <typename Scalar>
 Scalar agreement_bound(const Scalar& amplification) {
-  if constexpr (is_exact_v<Scalar>) return Scalar(0);
+  if constexpr (!tracks_rounding_v<Scalar>) return Scalar(0);
   else return Scalar(2 * kResultRoundings) * std::numeric_limits<Scalar>::epsilon() * amplification;
 }
 
@@ -189,7 +199,7 @@ inline constexpr double kSolveRoundings = 16;
 // length is below it is noise: Problem::negligible.
 template <typename Scalar>
 Scalar solve_roundoff(const Scalar& kappa, const Scalar& scale) {
-  if constexpr (is_exact_v<Scalar>) return Scalar(0);
+  if constexpr (!tracks_rounding_v<Scalar>) return Scalar(0);
   else return Scalar(kSolveRoundings) * std::numeric_limits<Scalar>::epsilon() * kappa * scale;
 }
 
@@ -205,7 +215,7 @@ Scalar velocity_scale(const Scene<Scalar>& s) {
 // of Figure 2) are taken against it, and the text report prints a velocity below it as 0.
 template <typename Scalar>
 Scalar velocity_roundoff(const Scene<Scalar>& s, const Scalar& kappa) {
-  if constexpr (is_exact_v<Scalar>) return Scalar(0);  // and no norm, which is not rational
+  if constexpr (!tracks_rounding_v<Scalar>) return Scalar(0);  // and no norm, which is not rational
   else return solve_roundoff(kappa, velocity_scale(s));
 }
 
@@ -230,7 +240,7 @@ inline constexpr double kArithmeticRoundings = 16;
 // kArithmeticRoundings * eps * scale.
 template <typename Scalar>
 Scalar arithmetic_roundoff(const Scalar& scale) {
-  if constexpr (is_exact_v<Scalar>) return Scalar(0);
+  if constexpr (!tracks_rounding_v<Scalar>) return Scalar(0);
   else return Scalar(kArithmeticRoundings) * std::numeric_limits<Scalar>::epsilon() * scale;
 }
 
@@ -253,7 +263,7 @@ inline constexpr double kMomentumRoundings = 32;
 
 template <typename Scalar>
 Scalar momentum_roundoff(const Scalar& scale) {
-  if constexpr (is_exact_v<Scalar>) return Scalar(0);
+  if constexpr (!tracks_rounding_v<Scalar>) return Scalar(0);
   else return Scalar(kMomentumRoundings) * std::numeric_limits<Scalar>::epsilon() * scale;
 }
 

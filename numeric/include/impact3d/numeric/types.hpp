@@ -35,10 +35,20 @@ struct DualTraits {
 template <typename Scalar>
 inline constexpr bool is_dual_v = DualTraits<Scalar>::is_dual;
 
+// A scalar that encloses its exact value (numeric/ball.hpp specializes this): where the rounding model
+// (rounding.hpp) estimates, the enclosure answers for itself.
+template <typename Scalar>
+struct EnclosureTraits {
+  static constexpr bool is_enclosure = false;
+};
+template <typename Scalar>
+inline constexpr bool is_enclosure_v = EnclosureTraits<Scalar>::is_enclosure;
+
 template <typename Scalar>
 Scalar pi() {
   static_assert(!std::numeric_limits<Scalar>::is_exact, "pi has no exact value");
   if constexpr (is_dual_v<Scalar>) return Scalar(pi<typename DualTraits<Scalar>::Value>());
+  else if constexpr (requires { Scalar::pi(); }) return Scalar::pi();
   else return boost::math::constants::pi<Scalar>();
 }
 

@@ -12,6 +12,9 @@ struct VerifyOptions {
   std::vector<std::string> inputs;  // case files or directories of them
   int random = 0;                   // seeded random cases to add
   std::uint64_t seed = 1;
+  // --certify: also enclose each case in ball arithmetic and prove every precision's stated bound on it.
+  bool certify = false;
+  double corrupt_double = 0;  // the tests' injected error: relative, added to every double P_n it certifies
 };
 
 // Prints the report; returns 0 when every bound holds and every precision takes the reference's

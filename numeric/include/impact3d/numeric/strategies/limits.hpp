@@ -16,7 +16,7 @@ namespace impact3d::strategies {
 // The size that decides whether a direction is lost in rounding; exact types test for zero alone.
 template <typename Scalar>
 Scalar magnitude(const Vec3<Scalar>& v) {
-  if constexpr (is_exact_v<Scalar>) return Scalar(0);
+  if constexpr (!rounding::tracks_rounding_v<Scalar>) return Scalar(0);
   else return v.norm();
 }
 
@@ -38,6 +38,7 @@ template <typename Scalar>
 PlaneAxes<Scalar> solution_plane(const Problem<Scalar>& p, const Scalar& d_t, const Scalar& d_z, const Scalar& length,
                                  const Scalar& scale, ImpulseSolution<Scalar>& out, const char* undefined) {
   PlaneAxes<Scalar> ax{Scalar(1), Scalar(0)};
+  const DecisionName<Scalar> name(decision_names::plane_direction);
   if (p.negligible(length, scale))
     out.warn(WarningCode::plane_undefined, [&] { return undefined; });
   else
@@ -65,7 +66,8 @@ void flag_if_not_finite(ImpulseSolution<Scalar>& out, const Scalar& value, const
 template <typename Scalar>
 void flag_if_undecided(ImpulseSolution<Scalar>& out, const Problem<Scalar>& p, const Scalar& mu, const Scalar& limit,
                        const char* name) {
-  if constexpr (!is_exact_v<Scalar>) {
+  // An enclosure decides for itself: its comparisons record what they cannot decide (decisions.hpp).
+  if constexpr (rounding::tracks_rounding_v<Scalar>) {
     using std::abs;
     if (!is_finite(limit)) return;
     auto bound = [&](const Scalar& amplification) {
@@ -85,6 +87,7 @@ void flag_if_undecided(ImpulseSolution<Scalar>& out, const Problem<Scalar>& p, c
 
 template <typename Scalar>
 void flag_if_negative_ratio(ImpulseSolution<Scalar>& out, const Scalar& mu, const char* name) {
+  const DecisionName<Scalar> decision(decision_names::ratio_sign);
   if (mu < Scalar(0))
     out.warn(WarningCode::negative_ratio, [&] {
       return std::string(name) + " used is negative: the contact-plane impulse acts along the initial sliding";

@@ -27,7 +27,12 @@ Singular pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec, Impulse
   if (!out.cir) return {"pc-crash CIR (eq 19)"};
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
   flag_if_undecided(out, p, spec.mu, gir, "GIR (eq 14)");
-  if (spec.mu >= gir) {
+  bool full;
+  {
+    const DecisionName<Scalar> name(decision_names::pc_crash_regime);
+    full = spec.mu >= gir;
+  }
+  if (full) {
     out.regime = Regime::full;
     out.mu = gir;
     out.P_C = *P_fi;

@@ -22,7 +22,11 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
   flag_if_not_finite(out, *out.gir, "GIR (eq 20)");
   const Scalar limit = spec.limit == WachLimit::cir ? *out.cir : *out.gir;
   flag_if_undecided(out, p, spec.mu, limit, spec.limit == WachLimit::cir ? "CIR (eq 19)" : "GIR (eq 20)");
-  const bool capped = spec.mu >= limit;
+  bool capped;
+  {
+    const DecisionName<Scalar> name(spec.limit == WachLimit::cir ? decision_names::wach_cap_cir : decision_names::wach_cap_gir);
+    capped = spec.mu >= limit;
+  }
   out.regime = capped ? Regime::capped : Regime::sliding;
   out.mu = capped ? limit : spec.mu;
   flag_if_negative_ratio(out, *out.mu, "impulse ratio");

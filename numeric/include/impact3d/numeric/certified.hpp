@@ -1,0 +1,50 @@
+// A collision solved in ball arithmetic (issue 14): every strategy through the same analyze as every
+// other scalar, each with the decisions it took (decisions.hpp) and, for each it could not decide at
+// the working precision, the result of the other branch. Exact ties are recognized by the rational
+// solve, where the case is rational.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "impact3d/numeric/analysis.hpp"
+#include "impact3d/numeric/ball.hpp"
+#include "impact3d/numeric/exact.hpp"
+
+namespace impact3d {
+
+// The branch a decision did not take: its solution, or why there is none.
+struct CertifiedAlternative {
+  std::string decision;
+  std::optional<Solution<Ball>> solution;
+  std::vector<Decision> decisions;
+  std::string failure;
+};
+
+struct CertifiedAnalysis {
+  Analysis<Ball> analysis;  // the case-level quantities, and each strategy's solution on its midpoint branches
+  std::vector<std::vector<Decision>> decisions;               // per strategy
+  std::vector<std::vector<CertifiedAlternative>> alternatives;  // per strategy: one per undecided decision
+  long bits = 0;
+
+  bool undecided() const {
+    for (const auto& list : decisions)
+      for (const auto& d : list)
+        if (d.status == DecisionStatus::undecided) return true;
+    return false;
+  }
+};
+
+// At the thread's ball_bits. Throws SolveError as analyze does; where the bodies' approach itself is
+// undecided, the message says so.
+CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Strategy<Ball>>& strategies,
+                                    Engine engine = Engine::generated);
+
+// The names of `decisions` (of one strategy's certified solve) that are exact ties by the exact solution
+// of the same strategy: mu equal to the limit it is compared with, P_n, V_rn after or the energy loss
+// exactly zero. Only undecided decisions are looked at.
+std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, const Strategy<rational>& strategy,
+                                    const Solution<rational>& exact);
+
+}  // namespace impact3d

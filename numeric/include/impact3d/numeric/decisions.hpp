@@ -1,0 +1,105 @@
+// The branch decisions of a computation, for a scalar type that knows whether its comparisons are
+// certain (ball.hpp's enclosures). The mechanics name each comparison that chooses a branch by a
+// DecisionName alive around it; for every other scalar the name costs nothing. While a DecisionLog is
+// installed on the thread, the enclosure type records each named comparison (decided, or an exact tie)
+// and every comparison it cannot decide, named or not, and takes the branch the log says.
+#pragma once
+
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace impact3d {
+
+// The names of the decisions the mechanics take, as results list them.
+namespace decision_names {
+inline constexpr char approach[] = "approach: V_rn > 0";
+inline constexpr char pc_crash_regime[] = "regime: mu >= GIR (eq 14)";
+inline constexpr char wach_cap_cir[] = "cap: mu >= CIR (eq 19)";
+inline constexpr char wach_cap_gir[] = "cap: mu >= GIR (eq 20)";
+inline constexpr char plane_direction[] = "solution plane: direction defined";
+inline constexpr char ratio_sign[] = "sign of the impulse ratio used";
+inline constexpr char normal_impulse_sign[] = "sign of P_n";
+inline constexpr char volume[] = "volume (Figure 2): the sign of V_rn after and the change of sliding along t";
+inline constexpr char z_sliding[] = "sliding along z: none, started, continued, stopped or reversed";
+inline constexpr char energy_loss_sign[] = "energy: sign of the loss";
+inline constexpr char pdof[] = "PDOF: Delta-V has a horizontal part in vehicle axes, and its angle's quadrant";
+inline constexpr char swerve[] = "sliding and swerve: which of the initial and final sliding are zero, and the swerve's side";
+inline constexpr char heading_after[] = "heading after: horizontal speed > 0";
+inline constexpr char cil_direction[] = "critical impulse line: the sign of its direction's P_n component";
+}  // namespace decision_names
+
+enum class DecisionStatus { decided, undecided, tie };
+
+inline const char* decision_status_name(DecisionStatus s) {
+  switch (s) {
+    case DecisionStatus::decided: return "decided";
+    case DecisionStatus::undecided: return "undecided";
+    case DecisionStatus::tie: return "tie";
+  }
+  return "?";
+}
+
+struct Decision {
+  std::string name;
+  DecisionStatus status = DecisionStatus::decided;
+  std::string detail;  // the compared difference's enclosure, and the branch taken
+};
+
+// What one computation decided, one entry per name (a name compared several times keeps its least
+// certain status and that comparison's detail), and which undecided name, if any, takes its other branch.
+struct DecisionLog {
+  std::vector<Decision> decisions;
+  std::string flip;  // the name whose undecided comparisons take the branch the midpoint does not
+
+  void record(const char* name, DecisionStatus status, std::string detail) {
+    for (auto& d : decisions)
+      if (d.name == name) {
+        if (rank(status) > rank(d.status)) d = {name, status, std::move(detail)};
+        return;
+      }
+    decisions.push_back({name, status, std::move(detail)});
+  }
+  bool undecided() const {
+    for (const auto& d : decisions)
+      if (d.status == DecisionStatus::undecided) return true;
+    return false;
+  }
+
+  static inline thread_local DecisionLog* current = nullptr;
+  static inline thread_local const char* current_name = nullptr;
+
+ private:
+  static int rank(DecisionStatus s) { return s == DecisionStatus::undecided ? 2 : s == DecisionStatus::tie ? 1 : 0; }
+};
+
+// Installs a log on this thread for its lifetime.
+class DecisionRecording {
+ public:
+  explicit DecisionRecording(DecisionLog& log) : previous_(DecisionLog::current) { DecisionLog::current = &log; }
+  ~DecisionRecording() { DecisionLog::current = previous_; }
+  DecisionRecording(const DecisionRecording&) = delete;
+  DecisionRecording& operator=(const DecisionRecording&) = delete;
+
+ private:
+  DecisionLog* previous_;
+};
+
+// The name of the comparisons made while it lives, for the scalar types that record them.
+template <typename Scalar, typename = void>
+struct DecisionName {
+  constexpr explicit DecisionName(const char*) {}
+};
+
+template <typename Scalar>
+struct DecisionName<Scalar, std::enable_if_t<Scalar::records_decisions>> {
+  explicit DecisionName(const char* name) : previous_(DecisionLog::current_name) { DecisionLog::current_name = name; }
+  ~DecisionName() { DecisionLog::current_name = previous_; }
+  DecisionName(const DecisionName&) = delete;
+  DecisionName& operator=(const DecisionName&) = delete;
+
+ private:
+  const char* previous_;
+};
+
+}  // namespace impact3d

@@ -1,0 +1,106 @@
+// The certified solve (numeric/certified.hpp): analyze at the ball scalar, once per strategy under a
+// decision log, and once more per undecided decision with that decision's other branch.
+#include "impact3d/numeric/certified.hpp"
+
+#include <cstring>
+#include <utility>
+
+namespace impact3d {
+namespace {
+
+struct Run {
+  std::optional<Analysis<Ball>> analysis;
+  std::vector<Decision> decisions;
+  std::string failure;
+};
+
+Run run(const Scene<Ball>& s, const Strategy<Ball>& st, Engine engine, const std::string& flip) {
+  Run r;
+  DecisionLog log;
+  log.flip = flip;
+  {
+    const DecisionRecording recording(log);
+    try {
+      r.analysis = analyze(s, std::vector<Strategy<Ball>>{st}, engine);
+    } catch (const SolveError& e) {
+      r.failure = e.what();
+    }
+  }
+  r.decisions = std::move(log.decisions);
+  return r;
+}
+
+}  // namespace
+
+CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Strategy<Ball>>& strategies, Engine engine) {
+  CertifiedAnalysis out;
+  out.bits = ball_bits;
+  for (std::size_t k = 0; k < strategies.size(); ++k) {
+    Run main = run(s, strategies[k], engine, "");
+    if (!main.analysis) {
+      std::string message = main.failure;
+      for (const auto& d : main.decisions)
+        if (d.status == DecisionStatus::undecided)
+          message += "; undecided at " + std::to_string(ball_bits) + " bits: " + d.name + " (" + d.detail + ")";
+      SolveError e(message);
+      e.strategy = k;
+      throw e;
+    }
+    if (k == 0) {
+      out.analysis = *main.analysis;
+      out.analysis.solutions.clear();
+    }
+    out.analysis.solutions.push_back(main.analysis->solutions.front());
+    std::vector<CertifiedAlternative> alternatives;
+    for (const auto& d : main.decisions) {
+      if (d.status != DecisionStatus::undecided) continue;
+      Run other = run(s, strategies[k], engine, d.name);
+      CertifiedAlternative a{d.name, std::nullopt, std::move(other.decisions), std::move(other.failure)};
+      if (other.analysis) a.solution = other.analysis->solutions.front();
+      alternatives.push_back(std::move(a));
+    }
+    out.decisions.push_back(std::move(main.decisions));
+    out.alternatives.push_back(std::move(alternatives));
+  }
+  return out;
+}
+
+std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, const Strategy<rational>& strategy,
+                                    const Solution<rational>& exact) {
+  namespace n = decision_names;
+  const rational zero(0);
+  auto limit_tie = [&]() {
+    if (const auto* pc = std::get_if<PcCrash<rational>>(&strategy)) return exact.impulse.gir && *exact.impulse.gir == pc->mu;
+    if (const auto* w = std::get_if<Wach<rational>>(&strategy)) {
+      const auto& limit = w->limit == WachLimit::cir ? exact.impulse.cir : exact.impulse.gir;
+      return limit && *limit == w->mu;
+    }
+    return false;
+  };
+  std::vector<std::string> ties;
+  for (const auto& d : decisions) {
+    if (d.status != DecisionStatus::undecided) continue;
+    const char* name = d.name.c_str();
+    bool tie = false;
+    if (!std::strcmp(name, n::pc_crash_regime) || !std::strcmp(name, n::wach_cap_cir) || !std::strcmp(name, n::wach_cap_gir))
+      tie = limit_tie();
+    else if (!std::strcmp(name, n::normal_impulse_sign))
+      tie = exact.impulse.P_C.x() == zero;
+    else if (!std::strcmp(name, n::volume))
+      tie = exact.V_rf.x() == zero || exact.V_rf.y() == zero;
+    else if (!std::strcmp(name, n::z_sliding))
+      tie = exact.V_rf.z() == zero || exact.V_ri.z() == zero;
+    else if (!std::strcmp(name, n::swerve)) {
+      // The swerve's comparisons are of |V_rf| in the contact plane and of the final sliding across and
+      // along the initial one, V_ri x V_rf and V_ri . V_rf there: rational.
+      const rational across = exact.V_ri.y() * exact.V_rf.z() - exact.V_ri.z() * exact.V_rf.y();
+      const rational along = exact.V_ri.y() * exact.V_rf.y() + exact.V_ri.z() * exact.V_rf.z();
+      tie = across == zero || along == zero || (exact.V_rf.y() == zero && exact.V_rf.z() == zero);
+    } else if (!std::strcmp(name, n::energy_loss_sign))
+      tie = exact.energy_loss == zero;
+    if (tie) ties.push_back(d.name);
+  }
+  return ties;
+}
+
+}  // namespace impact3d

@@ -1,0 +1,217 @@
+// --precision certified[:BITS] (issue 14; contract: many-cases.md): the result document with every
+// number the midpoint of a ball that encloses the exact result for the inputs as written, the enclosures
+// as decimal strings rounded outward, and each result's decisions with the other branch of each that
+// the balls could not decide. The text report prints only certified digits.
+#include "render_certified.hpp"
+
+#include <charconv>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_tree.hpp"
+#include "impact3d/io/read_case.hpp"
+#include "impact3d/io/report_text.hpp"
+#include "impact3d/io/result_json.hpp"
+#include "impact3d/io/to_scene.hpp"
+#include "impact3d/numeric/certified.hpp"
+#include "impact3d/numeric/exact_analysis.hpp"
+
+namespace impact3d::io {
+namespace {
+
+// The ball text of this thread for one scope.
+class TextForm {
+ public:
+  explicit TextForm(BallText t) : previous_(ball_text) { ball_text = t; }
+  ~TextForm() { ball_text = previous_; }
+  TextForm(const TextForm&) = delete;
+  TextForm& operator=(const TextForm&) = delete;
+
+ private:
+  BallText previous_;
+};
+
+// Undecided decisions that the exact solve shows to be ties become ties, and lose their alternative.
+void recognize_ties(const CaseSpec& spec, Engine engine, CertifiedAnalysis& x) {
+  if (!x.undecided()) return;
+  std::optional<ExactAnalysis> exact;
+  try {
+    exact = exact_analyze(to_scene<rational>(spec), to_strategies<rational>(spec), engine);
+  } catch (const std::exception&) {
+    return;  // not rational, or not solvable exactly: the decisions stay undecided
+  }
+  const auto strategies = to_strategies<rational>(spec);
+  for (std::size_t k = 0; k < x.decisions.size(); ++k) {
+    const auto& r = exact->results[k];
+    if (!r.solution) continue;
+    for (const auto& name : exact_ties(x.decisions[k], strategies[k], *r.solution)) {
+      for (auto& d : x.decisions[k])
+        if (d.name == name) {
+          d.status = DecisionStatus::tie;
+          d.detail += "; exact arithmetic: a tie (the compared quantities are equal), where both branches give "
+                      "the same result";
+        }
+      std::erase_if(x.alternatives[k], [&](const CertifiedAlternative& a) { return a.decision == name; });
+    }
+  }
+}
+
+void write_decisions(JsonWriter& w, const std::vector<Decision>& decisions) {
+  w.key("decisions").begin_array();
+  for (const auto& d : decisions) {
+    w.begin_object();
+    w.key("name").string(d.name);
+    w.key("status").string(decision_status_name(d.status));
+    w.key("detail").string(d.detail);
+    w.end_object();
+  }
+  w.end_array();
+}
+
+std::string document(const CaseSpec& shown, const CertifiedAnalysis& x, const std::string& label, bool one_line,
+                     const std::function<void(JsonWriter&)>& extra) {
+  const Present<Ball> p(shown.units, std::numeric_limits<Ball>::max_digits10);
+  const std::string split_rule = shown.energy_split ? shown.energy_split->rule : std::string("mass");
+  return result_json<Ball>(shown, x.analysis, label, 0, false, extra, one_line, nullptr, [&](JsonWriter& w, std::size_t k) {
+    write_decisions(w, x.decisions[k]);
+    if (x.alternatives[k].empty()) return;
+    w.key("alternatives").begin_array();
+    for (const auto& a : x.alternatives[k]) {
+      w.begin_object();
+      w.key("decision").string(a.decision);
+      if (a.solution) {
+        w.key("result");
+        write_solution(w, shown.strategies[k], shown.vehicles.data(), *a.solution, p, false, split_rule,
+                       [&](JsonWriter& to) { write_decisions(to, a.decisions); });
+      } else {
+        w.key("failure").string(a.failure);
+      }
+      w.end_object();
+    }
+    w.end_array();
+  });
+}
+
+// Every number of `mid` at its path, with the numbers at the same place of `lo` and `hi`.
+void collect(const JsonValue& mid, const JsonValue& lo, const JsonValue& hi, const std::string& path,
+             std::vector<std::pair<std::string, std::pair<std::string, std::string>>>& out) {
+  if (mid.is(JsonValue::Type::number)) {
+    if (!lo.is(JsonValue::Type::number) || !hi.is(JsonValue::Type::number))
+      throw std::logic_error("certified: the bounds' documents differ in shape at " + path);
+    out.push_back({path, {lo.text, hi.text}});
+    return;
+  }
+  if (mid.size() != lo.size() || mid.size() != hi.size())
+    throw std::logic_error("certified: the bounds' documents differ in shape at " + path);
+  for (std::size_t i = 0; i < mid.size(); ++i) {
+    const std::string step = mid.is(JsonValue::Type::object) ? (path.empty() ? "" : path + ".") + mid.keys[i]
+                                                             : path + "[" + std::to_string(i) + "]";
+    collect(mid.items[i], lo.items[i], hi.items[i], step, out);
+  }
+}
+
+JsonValue parsed(const std::string& text) {
+  JsonValue v;
+  if (!parse_json_tree_fast(text, v, true)) v = parse_json_tree_checked(text);
+  return v;
+}
+
+std::string certified_json(const CaseSpec& shown, const CertifiedAnalysis& x, const std::string& label, bool one_line) {
+  std::string texts[3];
+  const BallText forms[3] = {BallText::midpoint, BallText::lower, BallText::upper};
+  for (int i = 0; i < 3; ++i) {
+    const TextForm form(forms[i]);
+    texts[i] = document(shown, x, label, false, {});
+  }
+  std::vector<std::pair<std::string, std::pair<std::string, std::string>>> enclosures;
+  collect(parsed(texts[0]), parsed(texts[1]), parsed(texts[2]), "", enclosures);
+  const TextForm form(BallText::midpoint);
+  return document(shown, x, label, one_line, [&](JsonWriter& w) {
+    w.key("enclosures").begin_object();
+    for (const auto& [path, bounds] : enclosures) {
+      w.key(path).begin_array();
+      w.string(bounds.first);
+      w.string(bounds.second);
+      w.end_array();
+    }
+    w.end_object();
+  });
+}
+
+std::string decisions_text(const CaseSpec& c, const CertifiedAnalysis& x) {
+  std::string out = wrap(fmt::format("\nDecisions (ball arithmetic at {} bits; a branch is decided only when the "
+                                     "ball of the compared difference lies on one side of zero)",
+                                     x.bits));
+  for (std::size_t k = 0; k < x.decisions.size(); ++k) {
+    out += wrap(strategy_label(c.strategies[k]) + ":", kTextWidth, "  ");
+    for (const auto& d : x.decisions[k]) {
+      const bool undecided = d.status == DecisionStatus::undecided;
+      out += wrap(fmt::format("{}: {}; {}{}", undecided ? "UNDECIDED" : decision_status_name(d.status), d.name, d.detail,
+                              undecided ? "; the other branch's result is in --format json's \"alternatives\"" : ""),
+                  kTextWidth, "    ");
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<long> certified_bits(std::string_view precision) {
+  constexpr std::string_view stem = "certified";
+  if (precision.substr(0, stem.size()) != stem) return std::nullopt;
+  const std::string_view rest = precision.substr(stem.size());
+  if (rest.empty()) return 0;
+  long bits = 0;
+  const char* begin = rest.data() + 1;
+  const char* end = rest.data() + rest.size();
+  const auto r = std::from_chars(begin, end, bits);
+  if (rest[0] != ':' || begin == end || r.ec != std::errc() || r.ptr != end || bits < kMinCertifiedBits ||
+      bits > kMaxCertifiedBits)
+    throw CaseError("--precision", fmt::format("certified takes a number of bits from {} to {} (certified:BITS), not {}",
+                                               kMinCertifiedBits, kMaxCertifiedBits, printable(precision)));
+  return bits;
+}
+
+std::string render_certified(const CaseSpec& spec, long bits, const RenderOptions& o) {
+  if (o.format == "html")
+    throw CaseError("--precision", "the HTML report is written at a floating precision; certified results: impact3d solve "
+                                   "--precision certified");
+  CaseSpec in_units;
+  const CaseSpec* shown = &spec;
+  if (o.units && *o.units != spec.units) {
+    in_units = spec;
+    in_units.units = *o.units;
+    shown = &in_units;
+  }
+  const bool given = bits > 0;
+  long b = given ? bits : kDefaultCertifiedBits;
+  for (;;) {
+    const BallBits precision(b);
+    CertifiedAnalysis x = certified_analyze(to_scene<Ball>(spec), to_strategies<Ball>(spec), o.engine);
+    recognize_ties(spec, o.engine, x);
+    bool wide = false;
+    for (const auto& s : x.analysis.solutions) wide = wide || !(to_double(s.rounding_bound) <= kCertifiedWidth);
+    if (!given && (x.undecided() || wide) && b * 2 <= kMaxDefaultCertifiedBits) {
+      b *= 2;
+      continue;
+    }
+    if (!given && b > kDefaultCertifiedBits)
+      for (auto& list : x.decisions)
+        for (auto& d : list)
+          if (d.status == DecisionStatus::undecided)
+            d.detail += fmt::format("; undecided at every precision from {} to {} bits, the difference's ball "
+                                    "narrowing around 0: consistent with an exact tie, which ball arithmetic cannot "
+                                    "prove (nor exact arithmetic, where the case or the quantity is not rational)",
+                                    kDefaultCertifiedBits, b);
+    const std::string label = "certified:" + std::to_string(b);
+    if (o.format == "json" || o.format == "jsonl") return certified_json(*shown, x, label, o.format == "jsonl");
+    const TextForm form(BallText::certified);
+    return report_text(*shown, x.analysis, label + " (only certified digits are printed)",
+                       o.digits > 0 ? o.digits : kCertifiedTextDigits) +
+           decisions_text(spec, x);
+  }
+}
+
+}  // namespace impact3d::io

@@ -1,0 +1,208 @@
+// Certified results (issue 14) by substitution: the balls of the certified solve hold the exact
+// fractions of the suite's rational cases (both engines), hold the 100-digit solve of seeded random
+// cases within that solve's own rounding bound, and narrow by the factor that doubling the bits
+// promises.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include <flint/fmpq.h>
+
+#include "impact3d/numeric/certified.hpp"
+#include "impact3d/numeric/exact_analysis.hpp"
+#include "impact3d/numeric/multiprecision.hpp"
+#include "support.hpp"
+
+using namespace impact3d;
+using namespace impact3d::test;
+
+namespace {
+
+// The suite's cases whose rotations are rational (as exam_exact lists them), and Figure 8's.
+const char* kRational[] = {"planar_right_angle.json", "restitution_zero.json", "restitution_one.json",
+                           "hard_lever_arms_near_zero.json", "exact_rational_rotations.json"};
+
+bool holds(const Ball& b, const rational& q) {
+  fmpq_t f;
+  fmpq_init(f);
+  const std::string text = boost::multiprecision::numerator(q).str() + "/" + boost::multiprecision::denominator(q).str();
+  fmpq_set_str(f, text.c_str(), 10);
+  const bool in = arb_contains_fmpq(b.get(), f);
+  fmpq_clear(f);
+  return in;
+}
+
+struct Tally {
+  int checked = 0;
+  void vec(const Vec3<Ball>& b, const Vec3<rational>& q) {
+    for (int k = 0; k < 3; ++k) one(b[k], q[k]);
+  }
+  void one(const Ball& b, const rational& q) {
+    INFO(q);
+    CHECK(holds(b, q));
+    ++checked;
+  }
+};
+
+template <typename T>
+Scene<T> widen(const Scene<double>& s) {
+  Scene<T> t;
+  auto v = [](const Vec3<double>& x) { return Vec3<T>(T(x.x()), T(x.y()), T(x.z())); };
+  auto m = [](const Mat3<double>& x) {
+    Mat3<T> r;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) r(i, j) = T(x(i, j));
+    return r;
+  };
+  for (int i = 0; i < 2; ++i) {
+    const auto& b = s.body[i];
+    t.body[i].mass = T(b.mass);
+    t.body[i].J_B = m(b.J_B);
+    t.body[i].R_WB = m(b.R_WB);
+    t.body[i].v_W = v(b.v_W);
+    t.body[i].w_B = v(b.w_B);
+    t.body[i].p_CgIc_B = v(b.p_CgIc_B);
+  }
+  t.R_WC = m(s.R_WC);
+  t.restitution = T(s.restitution);
+  return t;
+}
+
+template <typename T>
+std::vector<Strategy<T>> widen(const std::vector<Strategy<double>>& st) {
+  std::vector<Strategy<T>> out;
+  auto o = [](const std::optional<double>& x) { return x ? std::optional<T>(T(*x)) : std::nullopt; };
+  for (const auto& s : st) {
+    if (const auto* p = std::get_if<PcCrash<double>>(&s)) out.push_back(PcCrash<T>{T(p->mu)});
+    else if (const auto* w = std::get_if<Wach<double>>(&s)) out.push_back(Wach<T>{T(w->mu), w->limit});
+    else {
+      const auto& b = std::get<Brach<double>>(s);
+      out.push_back(Brach<T>{o(b.mu_t), o(b.mu_z)});
+    }
+  }
+  return out;
+}
+
+// x100 as a ball widened by `allowance` (the 100-digit solve's own error), then whether it meets b.
+bool meets(const Ball& b, const mp::float100& x100, const mp::float100& allowance) {
+  const BallBits bits(512);
+  Ball x(x100.str(110, std::ios_base::scientific));
+  Ball a(allowance.str(10, std::ios_base::scientific));
+  arb_add_error(x.get(), a.get());
+  return arb_overlaps(b.get(), x.get());
+}
+
+}  // namespace
+
+TEST_CASE("certified balls hold the exact fractions of every rational case", "[certified]") {
+  Tally tally;
+  int cases = 0;
+  std::vector<std::string> paths;
+  for (const char* name : kRational) paths.push_back(std::string(IMPACT3D_CASES_DIR) + "/" + name);
+  paths.push_back(example("fig8_side_impact.json"));
+  for (const auto& path : paths) {
+    INFO(path);
+    const io::CaseSpec c = load_spec(path);
+    for (Engine engine : kEngines) {
+      const ExactAnalysis x = exact_analyze(io::to_scene<rational>(c), io::to_strategies<rational>(c), engine);
+      const BallBits bits(128);
+      const CertifiedAnalysis b = certified_analyze(io::to_scene<Ball>(c), io::to_strategies<Ball>(c), engine);
+      ++cases;
+      tally.one(b.analysis.m_prime, x.m_prime);
+      for (int k = 0; k < 3; ++k) tally.vec(Vec3<Ball>(b.analysis.K.row(k).transpose()), Vec3<rational>(x.K.row(k).transpose()));
+      tally.vec(b.analysis.V_ri, x.V_ri);
+      tally.vec(b.analysis.space.P_max_loss, x.P_max_loss);
+      for (std::size_t k = 0; k < x.results.size(); ++k) {
+        if (!x.results[k].solution) continue;
+        const auto& q = *x.results[k].solution;
+        const auto& s = b.analysis.solutions[k];
+        tally.vec(s.impulse.P_C, q.impulse.P_C);
+        tally.vec(s.P_W, q.P_W);
+        tally.vec(s.V_rf, q.V_rf);
+        for (int i = 0; i < 2; ++i) {
+          tally.vec(s.after[i].v_W, q.after[i].v_W);
+          tally.vec(s.after[i].w_B, q.after[i].w_B);
+          tally.vec(s.change[i].dv_W, q.change[i].dv_W);
+        }
+        tally.one(s.energy_loss, q.energy_loss);
+        for (const auto& [ball, exact] : {std::pair{&s.impulse.mu, &q.impulse.mu}, std::pair{&s.impulse.gir, &q.impulse.gir},
+                                          std::pair{&s.impulse.cir, &q.impulse.cir}})
+          if (*ball && *exact) tally.one(**ball, **exact);
+        // What the balls could not decide on a rational case can only be an exact tie.
+        const auto ties = exact_ties(b.decisions[k], io::to_strategies<rational>(c)[k], q);
+        for (const auto& d : b.decisions[k]) {
+          INFO(d.name << ": " << d.detail);
+          if (d.status == DecisionStatus::undecided) CHECK(std::find(ties.begin(), ties.end(), d.name) != ties.end());
+        }
+      }
+    }
+  }
+  CHECK(cases == 12);
+  CHECK(tally.checked > 1000);
+}
+
+TEST_CASE("certified balls hold the 100-digit solve of seeded random cases", "[certified]") {
+  std::mt19937_64 g(20261125);
+  int cases = 0, compared = 0, undecided = 0;
+  for (int n = 0; n < 12; ++n) {
+    const Scene<double> s = random_scene(g);
+    const auto st = every_strategy(0.45);
+    const Analysis<mp::float100> a100 = analyze(widen<mp::float100>(s), widen<mp::float100>(st));
+    const BallBits bits(256);
+    const CertifiedAnalysis b = certified_analyze(widen<Ball>(s), widen<Ball>(st));
+    ++cases;
+    for (std::size_t k = 0; k < st.size(); ++k) {
+      bool decided = true;
+      for (const auto& d : b.decisions[k]) decided = decided && d.status != DecisionStatus::undecided;
+      if (!decided) {
+        ++undecided;
+        continue;
+      }
+      const auto& s100 = a100.solutions[k];
+      const auto& sb = b.analysis.solutions[k];
+      // The 100-digit solve is within its rounding bound (rounding.hpp) of the exact value, relative to
+      // the size of what is compared; the ball holds the exact value.
+      const mp::float100 scale_P = s100.impulse.P_C.norm(), scale_v = velocity_scale(widen<mp::float100>(s));
+      for (int i = 0; i < 3; ++i) {
+        INFO("case " << n << " strategy " << k << " component " << i);
+        CHECK(meets(sb.impulse.P_C[i], s100.impulse.P_C[i], s100.rounding_bound * scale_P));
+        CHECK(meets(sb.V_rf[i], s100.V_rf[i], s100.rounding_bound * scale_v));
+        for (int v = 0; v < 2; ++v) CHECK(meets(sb.after[v].v_W[i], s100.after[v].v_W[i], s100.rounding_bound * scale_v));
+        compared += 4;
+      }
+      CHECK(sb.impulse.regime == s100.impulse.regime);
+    }
+  }
+  CHECK(cases == 12);
+  CHECK(undecided == 0);
+  CHECK(compared == 12 * 10 * 12);
+}
+
+TEST_CASE("doubling the bits narrows the enclosures by about the factor the bits promise", "[certified]") {
+  std::mt19937_64 g(7);
+  int compared = 0;
+  for (int n = 0; n < 8; ++n) {
+    const Scene<double> s = random_scene(g);
+    const std::vector<Strategy<double>> st = {PcCrash<double>{0.4}, Wach<double>{0.4, WachLimit::cir}, Brach<double>{0.3, 0.05}};
+    std::array<std::vector<double>, 2> log2_radius;
+    for (int round = 0; round < 2; ++round) {
+      const BallBits bits(round == 0 ? 128 : 256);
+      const CertifiedAnalysis b = certified_analyze(widen<Ball>(s), widen<Ball>(st));
+      for (const auto& sol : b.analysis.solutions)
+        for (int i = 0; i < 3; ++i)
+          log2_radius[round].push_back(mag_get_d_log2_approx(arb_radref(sol.impulse.P_C[i].get())));
+    }
+    for (std::size_t j = 0; j < log2_radius[0].size(); ++j) {
+      // 128 more bits: each radius shrinks by 2^-128; the error propagation's own constants differ a
+      // little between the two runs, so 2^-100 to 2^-156 is asked.
+      const double shrink = log2_radius[1][j] - log2_radius[0][j];
+      INFO("case " << n << " entry " << j << ": log2 shrink " << shrink);
+      CHECK(shrink <= -100);
+      CHECK(shrink >= -156);
+      ++compared;
+    }
+  }
+  CHECK(compared == 8 * 3 * 3);
+}
