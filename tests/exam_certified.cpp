@@ -18,6 +18,7 @@
 #include "cli_process.hpp"
 #include "impact3d/io/json_tree.hpp"
 #include "impact3d/io/scalar_text.hpp"
+#include "impact3d/numeric/ball.hpp"
 #include "impact3d/numeric/exact.hpp"
 
 using namespace impact3d;
@@ -204,4 +205,30 @@ TEST_CASE("certified precision names are checked, and the text prints only certi
   INFO(expected);
   CHECK(expected.size() == 18);
   CHECK(text.out.find(expected) != std::string::npos);
+}
+
+// Known answers of the text form, by the definition of decimal rounding: a ball holding 11.17 exactly
+// rounds to 11.170000000000000 at 17 digits; a ball of 1 +- 10^-6 (its radius rounded up by Arb) reaches
+// below 0.999999, which rounds to 0.999999 at 6 digits and 1.0000 at 5, where 1.000001 does too: it
+// prints 1.0000 with the distance to its bounds; a ball of 0 +- 10^-30 shares no digit and prints its
+// bounds.
+TEST_CASE("a ball's text holds only digits every point of it shares", "[certified]") {
+  const BallBits bits(128);
+  auto text = [](const Ball& x, int digits) {
+    const BallText previous = ball_text;
+    ball_text = BallText::certified;
+    std::string out;
+    x.append_text(out, digits);
+    ball_text = previous;
+    return out;
+  };
+  CHECK(text(Ball(std::string("11.17")), 17) == "11.170000000000000");
+  CHECK(text(Ball(std::string("-0.0625")), 5) == "-0.062500");
+  CHECK(text(Ball(0), 17) == "0");
+  const std::string near_one = text(Ball(std::string("1 +/- 1e-6")), 17);
+  INFO(near_one);
+  CHECK(near_one.rfind("1.0000(+-", 0) == 0);
+  CHECK(text(Ball(std::string("0 +/- 1e-30")), 17).front() == '[');
+  // 1.5e+30 at 2 digits: no padded zeros that would read as certified.
+  CHECK(text(Ball(std::string("1.5e30")), 2) == "1.5e30");
 }

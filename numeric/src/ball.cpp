@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
+#include <new>
 #include <stdexcept>
 
 namespace impact3d {
@@ -19,10 +21,11 @@ std::string arf_text(const arf_t x, int digits, mpfr_rnd_t rnd, char conv = 'g')
   arf_get_mpfr(m, x, MPFR_RNDN);  // exact: m holds every bit of x
   const char format[] = {'%', '.', '*', 'R', "NDUZ"[rnd == MPFR_RNDN ? 0 : rnd == MPFR_RNDD ? 1 : rnd == MPFR_RNDU ? 2 : 3], conv, 0};
   char* s = nullptr;
-  mpfr_asprintf(&s, format, conv == 'e' ? digits - 1 : digits, m);
+  const int n = mpfr_asprintf(&s, format, conv == 'e' ? digits - 1 : digits, m);
+  mpfr_clear(m);
+  if (n < 0 || !s) throw std::bad_alloc();
   std::string out(s);
   mpfr_free_str(s);
-  mpfr_clear(m);
   return out;
 }
 
@@ -41,12 +44,10 @@ Ball bound(const Ball& x, bool upper) {
 std::string decimal_of(bool negative, const std::string& d, long e) {
   std::string s = negative ? "-" : "";
   const long n = static_cast<long>(d.size());
-  if (e >= 0 && e < 21) {
-    if (n <= e + 1) {
-      s += d + std::string(static_cast<std::size_t>(e + 1 - n), '0');
-    } else {
-      s += d.substr(0, static_cast<std::size_t>(e + 1)) + "." + d.substr(static_cast<std::size_t>(e + 1));
-    }
+  // Plain only where no zero would be padded on: a padded zero would read as a certified digit.
+  if (e >= 0 && e < 21 && n >= e + 1) {
+    s += d.substr(0, static_cast<std::size_t>(e + 1));
+    if (n > e + 1) s += "." + d.substr(static_cast<std::size_t>(e + 1));
   } else if (e < 0 && e > -7) {
     s += "0." + std::string(static_cast<std::size_t>(-e - 1), '0') + d;
   } else {
@@ -69,6 +70,10 @@ std::string difference_detail(const Ball& d) {
   arf_clear(hi);
   return s;
 }
+
+// FLINT and Arb keep per-thread caches (pi, powers of ten) until flint_cleanup: the main thread's are
+// freed at exit, before a leak checker looks.
+const int kCleanupAtExit = std::atexit(flint_cleanup);
 
 }  // namespace
 
@@ -135,12 +140,22 @@ void Ball::append_text(std::string& out, int digits) const {
     std::string digits;
     for (std::size_t k = negative ? 1 : 0; k < epos; ++k)
       if (a[k] != '.') digits += a[k];
-    out += decimal_of(negative, digits, std::strtol(a.c_str() + epos + 1, nullptr, 10));
+    const std::string m = decimal_of(negative, digits, std::strtol(a.c_str() + epos + 1, nullptr, 10));
+    out += m;
     if (n == d) return;
+    // Fewer digits than asked: how far from the printed m the ball reaches, rounded up, so that
+    // m(+-r) is itself an enclosure.
+    const Ball printed(m);
+    out += "(+-" + arf_text(arb_midref(hull(abs(printed - lo), abs(hi - printed)).upper().x_), 2, MPFR_RNDU) + ")";
     found = true;
   }
-  if (!found) out += arf_text(arb_midref(x_), 3, MPFR_RNDN);
-  out += "(+-" + arf_text(arb_midref(radius().x_), 2, MPFR_RNDU) + ")";
+  if (!found)  // no digit shared: the bounds themselves, rounded outward
+    out += "[" + arf_text(arb_midref(lo.x_), 2, MPFR_RNDD) + ", " + arf_text(arb_midref(hi.x_), 2, MPFR_RNDU) + "]";
+}
+
+double Ball::upper_double() const {
+  if (!finite()) return std::numeric_limits<double>::infinity();
+  return arf_get_d(arb_midref(upper().x_), ARF_RND_CEIL);
 }
 
 Ball operator+(const Ball& a, const Ball& b) {
@@ -176,11 +191,12 @@ bool ball_less(const Ball& a, const Ball& b, bool strict) {
       log->record(name, arb_is_zero(d.get()) ? DecisionStatus::tie : DecisionStatus::decided, difference_detail(d));
     return yes;
   }
+  const bool nan = arf_is_nan(arb_midref(a.get())) || arf_is_nan(arb_midref(b.get()));
   const int c = arf_cmp(arb_midref(a.get()), arb_midref(b.get()));
-  bool answer = strict ? c < 0 : c <= 0;
+  bool answer = !nan && (strict ? c < 0 : c <= 0);
   if (!log) return answer;
   if (name && log->flip == name) answer = !answer;
-  log->record(name ? name : "a comparison the mechanics do not name", DecisionStatus::undecided,
+  log->record(name ? name : decision_names::unnamed, DecisionStatus::undecided,
               difference_detail(d) + ", which contains 0; branch taken: " + (answer ? "true" : "false"));
   return answer;
 }

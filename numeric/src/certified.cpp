@@ -53,7 +53,8 @@ CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Stra
     out.analysis.solutions.push_back(main.analysis->solutions.front());
     std::vector<CertifiedAlternative> alternatives;
     for (const auto& d : main.decisions) {
-      if (d.status != DecisionStatus::undecided) continue;
+      // An unnamed comparison is never flipped: it has no other branch to show.
+      if (d.status != DecisionStatus::undecided || d.name == decision_names::unnamed) continue;
       Run other = run(s, strategies[k], engine, d.name);
       CertifiedAlternative a{d.name, std::nullopt, std::move(other.decisions), std::move(other.failure)};
       if (other.analysis) a.solution = other.analysis->solutions.front();
@@ -63,6 +64,11 @@ CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Stra
     out.alternatives.push_back(std::move(alternatives));
   }
   return out;
+}
+
+bool same_result_at_tie(const std::string& decision) {
+  namespace n = decision_names;
+  return decision == n::pc_crash_regime || decision == n::wach_cap_cir || decision == n::wach_cap_gir;
 }
 
 std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, const Strategy<rational>& strategy,

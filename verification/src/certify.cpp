@@ -3,6 +3,8 @@
 
 #include <map>
 
+#include <boost/multiprecision/cpp_int.hpp>
+
 #include <fmt/format.h>
 
 #include "impact3d/io/scalar_text.hpp"
@@ -17,11 +19,21 @@ namespace {
 // every point of a ball holds with room.
 constexpr long kCertifyBits = 512;
 
-// x (a value of the type under test) as the exact ball it is.
+// x (a finite value of the type under test) as the exact ball it is: its significand, an integer of the
+// type's digits, times a power of two (kCertifyBits holds every type's significand).
 template <typename T>
 Ball exactly(const T& x) {
-  if constexpr (std::is_same_v<T, double>) return Ball(x);
-  else return Ball(io::scalar_to_text(x, std::numeric_limits<T>::max_digits10 + 3));
+  if constexpr (std::is_same_v<T, double>) {
+    return Ball(x);
+  } else {
+    using std::frexp;
+    using std::ldexp;
+    int e = 0;
+    const T significand = ldexp(frexp(x, &e), std::numeric_limits<T>::digits);
+    Ball b(static_cast<boost::multiprecision::cpp_int>(significand).str());
+    arb_mul_2exp_si(b.get(), b.get(), e - std::numeric_limits<T>::digits);
+    return b;
+  }
 }
 
 // The largest |x - e| over the points e of the ball, over `bound`: at most 1 proves the bound.
@@ -29,7 +41,7 @@ template <typename T>
 double over_bound(const T& x, const Ball& enclosure, const Ball& bound) {
   const Ball far = abs(Ball(exactly(x) - enclosure)).upper();
   if (bound == Ball(0)) return far == Ball(0) ? 0 : std::numeric_limits<double>::infinity();
-  return static_cast<double>(Ball(far / bound).upper());
+  return Ball(far / bound).upper_double();
 }
 
 // The decisions that choose the impulse (and so V_rel after); the others only describe it (the volume,

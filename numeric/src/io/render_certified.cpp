@@ -47,13 +47,17 @@ void recognize_ties(const CaseSpec& spec, Engine engine, CertifiedAnalysis& x) {
     const auto& r = exact->results[k];
     if (!r.solution) continue;
     for (const auto& name : exact_ties(x.decisions[k], strategies[k], *r.solution)) {
+      const bool same = same_result_at_tie(name);
       for (auto& d : x.decisions[k])
         if (d.name == name) {
           d.status = DecisionStatus::tie;
-          d.detail += "; exact arithmetic: a tie (the compared quantities are equal), where both branches give "
-                      "the same result";
+          d.detail += same ? "; exact arithmetic: a tie (the compared quantities are equal), where both branches "
+                             "give the same result"
+                           : "; exact arithmetic: a tie (the compared quantity is exactly zero): the boundary case "
+                             "holds, which neither branch's category names; the result shows the midpoints' "
+                             "branch and \"alternatives\" the other";
         }
-      std::erase_if(x.alternatives[k], [&](const CertifiedAlternative& a) { return a.decision == name; });
+      if (same) std::erase_if(x.alternatives[k], [&](const CertifiedAlternative& a) { return a.decision == name; });
     }
   }
 }
@@ -189,7 +193,15 @@ std::string render_certified(const CaseSpec& spec, long bits, const RenderOption
   long b = given ? bits : kDefaultCertifiedBits;
   for (;;) {
     const BallBits precision(b);
-    CertifiedAnalysis x = certified_analyze(to_scene<Ball>(spec), to_strategies<Ball>(spec), o.engine);
+    CertifiedAnalysis x;
+    try {
+      x = certified_analyze(to_scene<Ball>(spec), to_strategies<Ball>(spec), o.engine);
+    } catch (const SolveError&) {
+      // A closed form dividing by a ball that holds zero, or an undecided approach: more bits may decide.
+      if (given || b * 2 > kMaxDefaultCertifiedBits) throw;
+      b *= 2;
+      continue;
+    }
     recognize_ties(spec, o.engine, x);
     bool wide = false;
     for (const auto& s : x.analysis.solutions) wide = wide || !(to_double(s.rounding_bound) <= kCertifiedWidth);

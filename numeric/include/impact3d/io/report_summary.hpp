@@ -34,6 +34,8 @@ struct ReportCells {
   // A post-impact relative velocity inside the rounding bound is zero: say so instead of printing noise.
   std::string vel(const Solution<Scalar>& s, const Scalar& v) const {
     using std::abs;
+    // An enclosure's own digits say what is known: there is no rounding bound to snap to.
+    if constexpr (is_enclosure_v<Scalar>) return p.num(v, p.f.velocity);
     if (abs(v) > s.velocity_roundoff || !is_finite(s.velocity_roundoff)) return p.num(v, p.f.velocity);
     return "0 (|x| < " + io::scalar_to_text(Scalar(s.velocity_roundoff / p.f.velocity), 1) + ")";
   }

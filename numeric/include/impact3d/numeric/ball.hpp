@@ -3,8 +3,9 @@
 // the same templated code as on every other scalar; the working precision is the thread's BallBits.
 //
 // Comparisons. <, <=, > and >= are decisions: certain when the ball of the difference lies on one side
-// of zero; otherwise they take the midpoints' branch (or, for the name a DecisionLog flips, the other)
-// and, while a log is installed, record the decision as undecided (decisions.hpp). == and != ask
+// of zero; otherwise they take the midpoints' branch (false where a midpoint is NaN, as for IEEE
+// numbers; for the name a DecisionLog flips, the other) and, while a log is installed, record the
+// decision as undecided (decisions.hpp). == and != ask
 // whether two balls are the same exact number, which is what the mechanics' tests for an exact zero or
 // an exact quarter turn mean. floor() takes the midpoint's floor, an exact integer: the mechanics use it
 // only where any integer is correct (a reduction by whole turns) or for a clock position.
@@ -56,7 +57,8 @@ class Ball {
   template <typename I, std::enable_if_t<std::is_integral_v<I>, int> = 0>
   Ball(I v) {  // NOLINT: integers convert exactly, as the mechanics' Scalar(2) expects
     arb_init(x_);
-    arb_set_si(x_, static_cast<slong>(v));
+    if constexpr (std::is_unsigned_v<I>) arb_set_ui(x_, static_cast<ulong>(v));
+    else arb_set_si(x_, static_cast<slong>(v));
   }
   Ball(double v) {  // NOLINT: exact (the double's own value)
     arb_init(x_);
@@ -112,6 +114,8 @@ class Ball {
 
   // The midpoint, rounded to nearest.
   explicit operator double() const { return arf_get_d(arb_midref(x_), ARF_RND_NEAR); }
+  // A double at least every point of the ball (+inf where it is not finite).
+  double upper_double() const;
   explicit operator long double() const { return static_cast<double>(*this); }
 
   bool exact() const { return arb_is_exact(x_); }
@@ -161,7 +165,11 @@ Ball atan2(const Ball& y, const Ball& x);
 Ball acos(const Ball& x);
 Ball floor(const Ball& x);
 inline Ball fabs(const Ball& x) { return abs(x); }
-inline Ball abs2(const Ball& x) { return x * x; }
+inline Ball abs2(const Ball& x) {
+  Ball r;
+  arb_sqr(r.get(), x.get(), ball_bits);
+  return r;
+}
 inline bool isfinite(const Ball& x) { return x.finite(); }
 inline bool isinf(const Ball& x) { return !x.finite() && !arf_is_nan(arb_midref(x.get())); }
 inline bool isnan(const Ball& x) { return arf_is_nan(arb_midref(x.get())); }
@@ -217,6 +225,19 @@ class numeric_limits<impact3d::Ball> {
 }  // namespace std
 
 namespace Eigen {
+namespace internal {
+// |x|^2 of a ball holding zero is [0, r^2], not the [-r^2, r^2] of x * x: norms stay enclosures with a
+// root.
+template <>
+struct abs2_impl<impact3d::Ball> {
+  static impact3d::Ball run(const impact3d::Ball& x) {
+    impact3d::Ball r;
+    arb_sqr(r.get(), x.get(), impact3d::ball_bits);
+    return r;
+  }
+};
+}  // namespace internal
+
 template <>
 struct NumTraits<impact3d::Ball> : GenericNumTraits<impact3d::Ball> {
   using Real = impact3d::Ball;

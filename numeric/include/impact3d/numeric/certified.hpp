@@ -43,7 +43,10 @@ CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Stra
 
 // The names of `decisions` (of one strategy's certified solve) that are exact ties by the exact solution
 // of the same strategy: mu equal to the limit it is compared with, P_n, V_rn after or the energy loss
-// exactly zero. Only undecided decisions are looked at.
+// exactly zero. Only undecided decisions are looked at. `same_result` says whether both branches of a
+// tie give the same result (a regime or cap: the impulse is continuous there); a category (the volume,
+// the sliding's change, a warning) is not.
+bool same_result_at_tie(const std::string& decision);
 std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, const Strategy<rational>& strategy,
                                     const Solution<rational>& exact);
 

@@ -26,6 +26,8 @@ inline constexpr char energy_loss_sign[] = "energy: sign of the loss";
 inline constexpr char pdof[] = "PDOF: Delta-V has a horizontal part in vehicle axes, and its angle's quadrant";
 inline constexpr char swerve[] = "sliding and swerve: which of the initial and final sliding are zero, and the swerve's side";
 inline constexpr char heading_after[] = "heading after: horizontal speed > 0";
+// A comparison of balls the mechanics do not name (it has no alternative computed: nothing flips it).
+inline constexpr char unnamed[] = "a comparison the mechanics do not name";
 inline constexpr char cil_direction[] = "critical impulse line: the sign of its direction's P_n component";
 }  // namespace decision_names
 

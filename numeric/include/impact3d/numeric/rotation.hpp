@@ -26,12 +26,12 @@ struct RadianConstants {
   Scalar pi_ = pi<Scalar>(), straight{180};
 };
 
-// Built once per type: at 100 digits each construction is an MPFR call and 1/2 a division. A dual
-// builds them each time: Eigen's AutoDiffScalar resizes a constant's empty derivatives in place, so
+// Built once per type: at 100 digits each construction is an MPFR call and 1/2 a division. A ball
+// builds them each time, at its thread's working precision; so does a dual: Eigen's AutoDiffScalar resizes a constant's empty derivatives in place, so
 // a kept one would carry one sensitivity's number of inputs into the next.
 template <typename Constants, typename Scalar>
 decltype(auto) constants() {
-  if constexpr (is_dual_v<Scalar>) {
+  if constexpr (is_dual_v<Scalar> || is_enclosure_v<Scalar>) {  // a ball's pi at the thread's working precision
     return Constants{};
   } else {
     static const Constants kept;

@@ -107,11 +107,45 @@ std::optional<Eigen::Matrix<Scalar, 3, Cols>> dual_solve(const Mat3<Scalar>& A, 
   return out;
 }
 
-// x = J^-1 b for a symmetric positive definite J: Cholesky for floating types, LU for exact ones.
+// A^-1 B in ball arithmetic (an enclosure type): elimination encloses the solution whichever pivots it
+// takes, and takes the largest midpoints without a comparison of balls (none to decide, so none to
+// record). Empty where a pivot's ball holds zero: singular as far as the enclosure can tell.
+template <typename Scalar, int Cols>
+std::optional<Eigen::Matrix<Scalar, 3, Cols>> enclosure_solve(Mat3<Scalar> A, Eigen::Matrix<Scalar, 3, Cols> B) {
+  using std::abs;
+  for (int k = 0; k < 3; ++k) {
+    int pivot = k;
+    for (int i = k + 1; i < 3; ++i)
+      if (static_cast<double>(abs(A(i, k))) > static_cast<double>(abs(A(pivot, k)))) pivot = i;
+    if (A(pivot, k).contains_zero()) return std::nullopt;
+    A.row(k).swap(A.row(pivot));
+    B.row(k).swap(B.row(pivot));
+    for (int i = k + 1; i < 3; ++i) {
+      const Scalar f = A(i, k) / A(k, k);
+      for (int j = k; j < 3; ++j) A(i, j) -= f * A(k, j);
+      for (int j = 0; j < Cols; ++j) B(i, j) -= f * B(k, j);
+    }
+  }
+  Eigen::Matrix<Scalar, 3, Cols> X;
+  for (int c = 0; c < Cols; ++c)
+    for (int k = 2; k >= 0; --k) {
+      Scalar r = B(k, c);
+      for (int j = k + 1; j < 3; ++j) r -= A(k, j) * X(j, c);
+      X(k, c) = r / A(k, k);
+    }
+  return X;
+}
+
+// x = J^-1 b for a symmetric positive definite J: Cholesky for floating types, LU for exact ones, ball
+// elimination for enclosures (NaN where J's balls hold a singular matrix).
 template <typename Scalar, typename Rhs>
 auto spd_solve(const Eigen::Matrix<Scalar, 3, 3>& J, const Rhs& b) {
   if constexpr (std::numeric_limits<Scalar>::is_exact) {
     return J.fullPivLu().solve(b).eval();
+  } else if constexpr (is_enclosure_v<Scalar>) {
+    using M = Eigen::Matrix<Scalar, 3, Rhs::ColsAtCompileTime>;
+    const auto X = enclosure_solve<Scalar, Rhs::ColsAtCompileTime>(J, M(b));
+    return X ? *X : M::Constant(std::numeric_limits<Scalar>::quiet_NaN());
   } else if constexpr (is_dual_v<Scalar>) {
     using V = typename DualTraits<Scalar>::Value;
     const Eigen::Matrix<Scalar, 3, Rhs::ColsAtCompileTime> B = b;

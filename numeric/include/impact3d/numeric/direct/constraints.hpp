@@ -59,30 +59,9 @@ std::optional<Vec3<Scalar>> solve_rows(const std::array<Row<Scalar>, 3>& rows) {
     b(k) = rows[k].rhs;
   }
   if constexpr (is_enclosure_v<Scalar>) {
-    // Elimination in ball arithmetic encloses the solution whichever pivots it takes; it picks the
-    // largest midpoints, and a pivot whose ball holds zero leaves the system unsolved (singular as far
-    // as the enclosure can tell).
-    using std::abs;
-    for (int k = 0; k < 3; ++k) {
-      int pivot = k;
-      for (int i = k + 1; i < 3; ++i)
-        if (to_double(abs(A(i, k))) > to_double(abs(A(pivot, k)))) pivot = i;
-      if (A(pivot, k).contains_zero()) return std::nullopt;
-      A.row(k).swap(A.row(pivot));
-      std::swap(b(k), b(pivot));
-      for (int i = k + 1; i < 3; ++i) {
-        const Scalar f = A(i, k) / A(k, k);
-        for (int j = k; j < 3; ++j) A(i, j) -= f * A(k, j);
-        b(i) -= f * b(k);
-      }
-    }
-    Vec3<Scalar> x;
-    for (int k = 2; k >= 0; --k) {
-      Scalar r = b(k);
-      for (int j = k + 1; j < 3; ++j) r -= A(k, j) * x(j);
-      x(k) = r / A(k, k);
-    }
-    return x;
+    const auto x = enclosure_solve<Scalar, 1>(A, b);
+    if (!x) return std::nullopt;
+    return Vec3<Scalar>(*x);
   } else if constexpr (is_dual_v<Scalar>) {
     using V = typename DualTraits<Scalar>::Value;
     const auto X = dual_solve(A, Eigen::Matrix<Scalar, 3, 1>(b), [](const Mat3<V>& M) {
