@@ -201,39 +201,33 @@ bool ball_less(const Ball& a, const Ball& b, bool strict) {
   return answer;
 }
 
+namespace {
+// f(r, x, ball_bits), as Arb's functions of one ball at a precision take it.
+template <typename F>
+Ball of_one(const Ball& x, F f) {
+  Ball r;
+  f(r.get(), x.get(), ball_bits);
+  return r;
+}
+}  // namespace
+
 Ball abs(const Ball& x) {
   Ball r;
   arb_abs(r.get(), x.get());
   return r;
 }
-Ball sqrt(const Ball& x) {
-  Ball r;
-  arb_sqrt(r.get(), x.get(), ball_bits);
-  return r;
-}
+Ball sqrt(const Ball& x) { return of_one(x, arb_sqrt); }
+Ball sin(const Ball& x) { return of_one(x, arb_sin); }
+Ball cos(const Ball& x) { return of_one(x, arb_cos); }
+Ball acos(const Ball& x) { return of_one(x, arb_acos); }
 Ball hypot(const Ball& a, const Ball& b) {
   Ball r;
   arb_hypot(r.get(), a.get(), b.get(), ball_bits);
   return r;
 }
-Ball sin(const Ball& x) {
-  Ball r;
-  arb_sin(r.get(), x.get(), ball_bits);
-  return r;
-}
-Ball cos(const Ball& x) {
-  Ball r;
-  arb_cos(r.get(), x.get(), ball_bits);
-  return r;
-}
 Ball atan2(const Ball& y, const Ball& x) {
   Ball r;
   arb_atan2(r.get(), y.get(), x.get(), ball_bits);
-  return r;
-}
-Ball acos(const Ball& x) {
-  Ball r;
-  arb_acos(r.get(), x.get(), ball_bits);
   return r;
 }
 Ball floor(const Ball& x) {

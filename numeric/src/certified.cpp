@@ -71,6 +71,14 @@ bool same_result_at_tie(const std::string& decision) {
   return decision == n::pc_crash_regime || decision == n::wach_cap_cir || decision == n::wach_cap_gir;
 }
 
+bool chooses_impulse(const std::string& decision) {
+  namespace n = decision_names;
+  for (const char* d : {n::approach, n::ratio_sign, n::normal_impulse_sign, n::volume, n::z_sliding, n::energy_loss_sign,
+                        n::pdof, n::swerve, n::heading_after, n::cil_direction})
+    if (decision == d) return false;
+  return true;  // the regime, the cap, the plane, and whatever is not named: assume it chose
+}
+
 std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, const Strategy<rational>& strategy,
                                     const Solution<rational>& exact) {
   namespace n = decision_names;

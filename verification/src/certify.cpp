@@ -44,19 +44,6 @@ double over_bound(const T& x, const Ball& enclosure, const Ball& bound) {
   return Ball(far / bound).upper_double();
 }
 
-// The decisions that choose the impulse (and so V_rel after); the others only describe it (the volume,
-// the swerve, the PDOF, warnings), and a result whose enclosure leaves only those undecided is still
-// certified for what is checked here.
-bool chooses_impulse(const std::string& name) {
-  namespace n = decision_names;
-  for (const char* d : {n::pc_crash_regime, n::wach_cap_cir, n::wach_cap_gir, n::plane_direction})
-    if (name == d) return true;
-  for (const char* d : {n::approach, n::ratio_sign, n::normal_impulse_sign, n::volume, n::z_sliding, n::energy_loss_sign,
-                        n::pdof, n::swerve, n::heading_after, n::cil_direction})
-    if (name == d) return false;
-  return true;  // a comparison the mechanics do not name: assume it chose
-}
-
 struct Tally {
   double worst = 0;
   std::string where;

@@ -47,6 +47,12 @@ CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Stra
 // tie give the same result (a regime or cap: the impulse is continuous there); a category (the volume,
 // the sliding's change, a warning) is not.
 bool same_result_at_tie(const std::string& decision);
+
+// Whether a decision chooses the impulse (and with it every state after): the regime, the cap, the
+// solution plane, or a comparison the mechanics do not name. The others describe a result (its volume,
+// sliding, swerve, PDOF, warnings), and an enclosure that leaves only those undecided still holds the
+// impulse and the states.
+bool chooses_impulse(const std::string& decision);
 std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, const Strategy<rational>& strategy,
                                     const Solution<rational>& exact);
 
