@@ -9,6 +9,7 @@
 //    and mu = 0.75 for pc-crash, 0.5 for Wach, are exact ties;
 //  - the contract (many-cases.md): every number of the document has an enclosure [lo, hi] holding it.
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,7 @@
 #include "impact3d/io/json_tree.hpp"
 #include "impact3d/io/scalar_text.hpp"
 #include "impact3d/numeric/ball.hpp"
+#include "impact3d/numeric/decisions.hpp"
 #include "impact3d/numeric/exact.hpp"
 
 using namespace impact3d;
@@ -231,4 +233,60 @@ TEST_CASE("a ball's text holds only digits every point of it shares", "[certifie
   CHECK(text(Ball(std::string("0 +/- 1e-30")), 17).front() == '[');
   // 1.5e+30 at 2 digits: no padded zeros that would read as certified.
   CHECK(text(Ball(std::string("1.5e30")), 2) == "1.5e30");
+}
+
+// The default precision doubles the bits up to 4096 while a decision stays undecided. Its JSON was once
+// read back under the case files' 256-character literal limit, and failed on every such case.
+nlohmann::json solve_certified(const std::string& file, const std::string& precision) {
+  const Run r = run_argv({"solve", file, "--precision", precision, "--format", "json"});
+  INFO(file << ": " << r.err);
+  REQUIRE(r.status == 0);
+  return nlohmann::json::parse(r.out);
+}
+
+TEST_CASE("the default certified JSON of every bundled case is written at the fewest bits that decide as much", "[certified]") {
+  int cases = 0, undecided = 0;
+  for (const auto& dir : {std::string(IMPACT3D_EXAMPLES_DIR), std::string(IMPACT3D_SOURCE_DIR) + "/verification/cases"})
+    for (const auto& f : fs::directory_iterator(dir)) {
+      if (f.path().extension() != ".json") continue;
+      const nlohmann::json doc = solve_certified(f.path().string(), "certified");
+      const std::string bits = doc.at("precision").get<std::string>().substr(10);
+      INFO(f.path().string() << " at " << bits << " bits");
+      for (const auto& r : doc.at("results"))
+        for (const auto& d : r.at("decisions"))
+          if (d.at("status") == "undecided") {
+            ++undecided;
+            CHECK(d.at("detail").get<std::string>().find("from " + bits + " to 4096 bits") != std::string::npos);
+          }
+      ++cases;
+    }
+  CHECK(cases == 32);
+  CHECK(undecided > 0);  // irrational exact zeros: planar z components, restitution 1's energy loss
+}
+
+TEST_CASE("certified JSON at 4096 bits has literals longer than a case's and still an enclosure for each", "[certified]") {
+  const nlohmann::json doc = solve_certified(kFig8, "certified:4096");
+  const std::string lo = doc.at("enclosures").at("coefficients.K[0][0]")[0].get<std::string>();
+  CHECK(lo.size() > 1000);  // 4096 bits: 1233 digits
+  CHECK(doc.at("enclosures").size() > 400);
+}
+
+// Restitution 1 without sliding loses no energy exactly; the balls cannot tell 0 from a tiny loss or
+// gain. The zero branch is taken, as the floating solve's rounding rule takes it: no gain warning and an
+// EES of exactly 0, the decision undecided, and its alternative on the other side.
+TEST_CASE("a quantity whose ball holds zero takes the zero branch, undecided, with the other as its alternative", "[certified]") {
+  const nlohmann::json doc =
+      solve_certified(std::string(IMPACT3D_SOURCE_DIR) + "/verification/cases/restitution_one.json", "certified:256");
+  const nlohmann::json& r = doc.at("results")[0];
+  CHECK(r.at("warnings").dump().find("energy gained") == std::string::npos);
+  CHECK(r.at("vehicles")[0].at("ees") == 0);
+  CHECK(doc.at("enclosures").at("results[0].vehicles[0].ees") == nlohmann::json::array({"0", "0"}));
+  bool undecided = false, alternative = false;
+  for (const auto& d : r.at("decisions"))
+    undecided = undecided || (d.at("name") == decision_names::energy_loss_sign && d.at("status") == "undecided");
+  for (const auto& a : r.at("alternatives"))
+    if (a.at("decision") == decision_names::energy_loss_sign)
+      alternative = a.at("result").at("vehicles")[0].at("ees") != 0;
+  CHECK(undecided);
+  CHECK(alternative);
 }

@@ -47,13 +47,15 @@ std::string decimal_of(bool negative, const std::string& d, long e) {
   // Plain only where no zero would be padded on: a padded zero would read as a certified digit.
   if (e >= 0 && e < 21 && n >= e + 1) {
     s += d.substr(0, static_cast<std::size_t>(e + 1));
-    if (n > e + 1) s += "." + d.substr(static_cast<std::size_t>(e + 1));
+    if (n > e + 1) s.append(".").append(d, static_cast<std::size_t>(e + 1));
   } else if (e < 0 && e > -7) {
-    s += "0." + std::string(static_cast<std::size_t>(-e - 1), '0') + d;
+    s += "0.";
+    s.append(static_cast<std::size_t>(-e - 1), '0');
+    s += d;
   } else {
     s += d.substr(0, 1);
-    if (n > 1) s += "." + d.substr(1);
-    s += "e" + std::to_string(e);
+    if (n > 1) s.append(".").append(d, 1);
+    s.append("e").append(std::to_string(e));
   }
   return s;
 }
@@ -179,9 +181,10 @@ Ball operator/(const Ball& a, const Ball& b) {
   return r;
 }
 
-bool ball_less(const Ball& a, const Ball& b, bool strict) {
-  Ball d;
-  arb_sub(d.get(), b.get(), a.get(), ball_bits);  // a < b: b - a > 0
+namespace {
+// Whether d > 0 (strict) or d >= 0, recorded in the thread's decision log. Undecided, the answer is
+// `prefer` where given, else the midpoints' (false for a NaN); the log's flip turns it.
+bool decide(const Ball& d, bool strict, const bool* prefer, bool nan) {
   const bool yes = strict ? arb_is_positive(d.get()) : arb_is_nonnegative(d.get());
   const bool no = strict ? arb_is_nonpositive(d.get()) : arb_is_negative(d.get());
   DecisionLog* log = DecisionLog::current;
@@ -191,14 +194,29 @@ bool ball_less(const Ball& a, const Ball& b, bool strict) {
       log->record(name, arb_is_zero(d.get()) ? DecisionStatus::tie : DecisionStatus::decided, difference_detail(d));
     return yes;
   }
-  const bool nan = arf_is_nan(arb_midref(a.get())) || arf_is_nan(arb_midref(b.get()));
-  const int c = arf_cmp(arb_midref(a.get()), arb_midref(b.get()));
-  bool answer = !nan && (strict ? c < 0 : c <= 0);
+  const int c = arf_sgn(arb_midref(d.get()));
+  bool answer = prefer ? *prefer : !nan && (strict ? c > 0 : c >= 0);
   if (!log) return answer;
   if (name && log->flip == name) answer = !answer;
   log->record(name ? name : decision_names::unnamed, DecisionStatus::undecided,
               difference_detail(d) + ", which contains 0; branch taken: " + (answer ? "true" : "false"));
   return answer;
+}
+}  // namespace
+
+bool ball_less(const Ball& a, const Ball& b, bool strict) {
+  Ball d;
+  arb_sub(d.get(), b.get(), a.get(), ball_bits);  // a < b: b - a > 0
+  return decide(d, strict, nullptr, arf_is_nan(arb_midref(a.get())) || arf_is_nan(arb_midref(b.get())));
+}
+
+bool ball_within(const Ball& x, const Ball& tol) {
+  Ball magnitude, d;
+  arb_abs(magnitude.get(), x.get());
+  arb_sub(d.get(), tol.get(), magnitude.get(), ball_bits);  // |x| <= tol: tol - |x| >= 0
+  const bool zero_inside = arb_contains_zero(x.get());
+  return decide(d, false, zero_inside ? &zero_inside : nullptr,
+                arf_is_nan(arb_midref(x.get())) || arf_is_nan(arb_midref(tol.get())));
 }
 
 namespace {

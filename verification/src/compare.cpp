@@ -179,10 +179,11 @@ RefCase load_reference(const std::string& name, const std::string& file) {
     const json& r = (*results)[i];
     if (!r.is_object()) throw CaseError(file + ": " + io::element_path("$.results", i), "not an object");
     auto& leaves = rc.results.emplace_back();
-    // The strategy echoes the input, the warnings are prose, and the rounding bound belongs to the
-    // precision that computed the result: none is a result to compare.
+    // The strategy echoes the input, the warnings are prose, the rounding bound belongs to the
+    // precision that computed the result, and the decisions to the ball arithmetic that proved it: none
+    // is a result to compare.
     for (const auto& [k, v] : r.items())
-      if (k != "strategy" && k != "warnings" && k != "rounding_bound") collect(v, {k}, false, leaves);
+      if (k != "strategy" && k != "warnings" && k != "rounding_bound" && k != "decisions") collect(v, {k}, false, leaves);
     auto& numbers = rc.numbers.emplace_back();
     for (const auto& l : leaves)
       if (l.value.is_number()) numbers.emplace(l.dotted, l.value.get<double>());

@@ -1,17 +1,23 @@
 // impact3d-reference: the reference outputs. Each case is solved at 100 decimal digits by both engines,
 // which must agree to rounding::kEngineAgreementDigits (80) digits, and the contract's result is written at 40 significant digits;
-// a post-impact relative velocity within the 100-digit rounding bound is written as 0.
+// a post-impact relative velocity within the 100-digit rounding bound is written as 0. Every digit
+// written is then proven by the certified result of the same case (reference_proof.hpp), or nothing is
+// written.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
 #include "impact3d/io/read_case.hpp"
+#include "impact3d/io/render.hpp"
+#include "impact3d/io/result_json.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 #include "impact3d/numeric/rounding.hpp"
+#include "impact3d/verification/reference_proof.hpp"
 
 namespace fs = std::filesystem;
 using namespace impact3d;
 using F = mp::float100;
+constexpr int kDigits = 40;  // significant digits written
 
 namespace {
 
@@ -47,7 +53,18 @@ int main(int argc, char** argv) {
                   << " digits\n";
         return 1;
       }
-      std::ofstream(out / in.filename(), std::ios::binary) << io::result_json(spec, a, "100", 40, true);
+      io::RenderOptions certified;
+      certified.format = "json";
+      const auto proof = verification::prove_reference(
+          [&](const auto& extra, const auto& per_result) {
+            return io::result_json(spec, a, "100", kDigits, true, extra, false, nullptr, per_result);
+          },
+          io::render(spec, "certified", certified), kDigits);
+      if (!proof.failure.empty()) {
+        std::cerr << "impact3d-reference: " << in << ": a digit is not proven: " << proof.failure << "\n";
+        return 1;
+      }
+      std::ofstream(out / in.filename(), std::ios::binary) << proof.document;
     } catch (const std::exception& e) {
       std::cerr << "impact3d-reference: " << in << ": " << e.what() << "\n";
       return 1;

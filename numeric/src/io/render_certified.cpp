@@ -10,7 +10,7 @@
 #include <fmt/format.h>
 
 #include "impact3d/io/escape.hpp"
-#include "impact3d/io/json_tree.hpp"
+#include "impact3d/io/number_literals.hpp"
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/io/report_text.hpp"
 #include "impact3d/io/result_json.hpp"
@@ -98,28 +98,12 @@ std::string document(const CaseSpec& shown, const CertifiedAnalysis& x, const st
   });
 }
 
-// Every number of `mid` at its path, with the numbers at the same place of `lo` and `hi`.
-void collect(const JsonValue& mid, const JsonValue& lo, const JsonValue& hi, const std::string& path,
-             std::vector<std::pair<std::string, std::pair<std::string, std::string>>>& out) {
-  if (mid.is(JsonValue::Type::number)) {
-    if (!lo.is(JsonValue::Type::number) || !hi.is(JsonValue::Type::number))
-      throw std::logic_error("certified: the bounds' documents differ in shape at " + path);
-    out.push_back({path, {lo.text, hi.text}});
-    return;
-  }
-  if (mid.size() != lo.size() || mid.size() != hi.size())
-    throw std::logic_error("certified: the bounds' documents differ in shape at " + path);
-  for (std::size_t i = 0; i < mid.size(); ++i) {
-    const std::string step = mid.is(JsonValue::Type::object) ? (path.empty() ? "" : path + ".") + mid.keys[i]
-                                                             : path + "[" + std::to_string(i) + "]";
-    collect(mid.items[i], lo.items[i], hi.items[i], step, out);
-  }
-}
-
-JsonValue parsed(const std::string& text) {
-  JsonValue v;
-  if (!parse_json_tree_fast(text, v, true)) v = parse_json_tree_checked(text);
-  return v;
+// Each number of an own document with its literal (none for a null: a bound that is not finite).
+std::vector<std::pair<std::string, std::optional<std::string>>> number_paths(const std::string& text) {
+  std::vector<std::pair<std::string, std::optional<std::string>>> out;
+  for (auto& n : number_literals(text))
+    out.emplace_back(std::move(n.path), n.null ? std::nullopt : std::optional(text.substr(n.begin, n.end - n.begin)));
+  return out;
 }
 
 std::string certified_json(const CaseSpec& shown, const CertifiedAnalysis& x, const std::string& label, bool one_line) {
@@ -129,15 +113,22 @@ std::string certified_json(const CaseSpec& shown, const CertifiedAnalysis& x, co
     const TextForm form(forms[i]);
     texts[i] = document(shown, x, label, false, {});
   }
-  std::vector<std::pair<std::string, std::pair<std::string, std::string>>> enclosures;
-  collect(parsed(texts[0]), parsed(texts[1]), parsed(texts[2]), "", enclosures);
+  const auto mid = number_paths(texts[0]), lo = number_paths(texts[1]), hi = number_paths(texts[2]);
+  if (lo.size() != mid.size() || hi.size() != mid.size())
+    throw std::logic_error("certified: the bounds' documents differ in shape");
+  // A number whose ball reaches infinity has a null bound; a null (not a number) has no enclosure.
+  std::vector<std::pair<std::string, std::pair<std::optional<std::string>, std::optional<std::string>>>> enclosures;
+  for (std::size_t i = 0; i < mid.size(); ++i) {
+    if (lo[i].first != mid[i].first || hi[i].first != mid[i].first)
+      throw std::logic_error("certified: the bounds' documents differ in shape at " + mid[i].first);
+    if (mid[i].second) enclosures.push_back({mid[i].first, {lo[i].second, hi[i].second}});
+  }
   const TextForm form(BallText::midpoint);
   return document(shown, x, label, one_line, [&](JsonWriter& w) {
     w.key("enclosures").begin_object();
     for (const auto& [path, bounds] : enclosures) {
       w.key(path).begin_array();
-      w.string(bounds.first);
-      w.string(bounds.second);
+      for (const auto& b : {bounds.first, bounds.second}) b ? w.string(*b) : w.null();
       w.end_array();
     }
     w.end_object();
@@ -158,6 +149,21 @@ std::string decisions_text(const CaseSpec& c, const CertifiedAnalysis& x) {
     }
   }
   return out;
+}
+
+bool wide(const CertifiedAnalysis& x) {
+  for (const auto& s : x.analysis.solutions)
+    if (!(to_double(s.rounding_bound) <= kCertifiedWidth)) return true;
+  return false;
+}
+
+// Which strategy's which decisions are undecided.
+std::vector<std::pair<std::size_t, std::string>> undecided_names(const CertifiedAnalysis& x) {
+  std::vector<std::pair<std::size_t, std::string>> names;
+  for (std::size_t k = 0; k < x.decisions.size(); ++k)
+    for (const auto& d : x.decisions[k])
+      if (d.status == DecisionStatus::undecided) names.emplace_back(k, d.name);
+  return names;
 }
 
 }  // namespace
@@ -190,40 +196,50 @@ std::string render_certified(const CaseSpec& spec, long bits, const RenderOption
     shown = &in_units;
   }
   const bool given = bits > 0;
-  long b = given ? bits : kDefaultCertifiedBits;
-  for (;;) {
+  // The default mode doubles the bits while a decision is undecided or a result's ball is wide. When a
+  // decision stays undecided to the last doubling, the extra bits bought nothing: the run reported is the
+  // first that was not wide and left the same decisions undecided (its digits are as certified, and far
+  // fewer than the last run's thousands).
+  std::vector<CertifiedAnalysis> runs;
+  for (long b = given ? bits : kDefaultCertifiedBits;; b *= 2) {
     const BallBits precision(b);
-    CertifiedAnalysis x;
     try {
-      x = certified_analyze(to_scene<Ball>(spec), to_strategies<Ball>(spec), o.engine);
+      runs.push_back(certified_analyze(to_scene<Ball>(spec), to_strategies<Ball>(spec), o.engine));
     } catch (const SolveError&) {
       // A closed form dividing by a ball that holds zero, or an undecided approach: more bits may decide.
       if (given || b * 2 > kMaxDefaultCertifiedBits) throw;
-      b *= 2;
       continue;
     }
+    CertifiedAnalysis& x = runs.back();
     recognize_ties(spec, o.engine, x);
-    bool wide = false;
-    for (const auto& s : x.analysis.solutions) wide = wide || !(to_double(s.rounding_bound) <= kCertifiedWidth);
-    if (!given && (x.undecided() || wide) && b * 2 <= kMaxDefaultCertifiedBits) {
-      b *= 2;
-      continue;
-    }
-    if (!given && b > kDefaultCertifiedBits)
-      for (auto& list : x.decisions)
-        for (auto& d : list)
-          if (d.status == DecisionStatus::undecided)
-            d.detail += fmt::format("; undecided at every precision from {} to {} bits, the difference's ball "
-                                    "narrowing around 0: consistent with an exact tie, which ball arithmetic cannot "
-                                    "prove (nor exact arithmetic, where the case or the quantity is not rational)",
-                                    kDefaultCertifiedBits, b);
-    const std::string label = "certified:" + std::to_string(b);
-    if (o.format == "json" || o.format == "jsonl") return certified_json(*shown, x, label, o.format == "jsonl");
-    const TextForm form(BallText::certified);
-    return report_text(*shown, x.analysis, label + " (only certified digits are printed)",
-                       o.digits > 0 ? o.digits : kCertifiedTextDigits) +
-           decisions_text(spec, x);
+    if (given || !(x.undecided() || wide(x)) || b * 2 > kMaxDefaultCertifiedBits) break;
   }
+  CertifiedAnalysis* shown_run = &runs.back();
+  if (!given && runs.back().undecided()) {
+    for (auto& r : runs)
+      if (!wide(r) && undecided_names(r) == undecided_names(runs.back())) {
+        shown_run = &r;
+        break;
+      }
+    if (runs.size() > 1) {
+      const std::string note = fmt::format(
+          "; undecided at every precision from {} to {} bits, the difference's ball narrowing around 0: consistent "
+          "with an exact tie, which ball arithmetic cannot prove (nor exact arithmetic, where the case or the "
+          "quantity is not rational)",
+          shown_run->bits, runs.back().bits);
+      for (auto& list : shown_run->decisions)
+        for (auto& d : list)
+          if (d.status == DecisionStatus::undecided) d.detail += note;
+    }
+  }
+  const CertifiedAnalysis& x = *shown_run;
+  const BallBits precision(x.bits);  // the digits printed are those of the run shown
+  const std::string label = "certified:" + std::to_string(x.bits);
+  if (o.format == "json" || o.format == "jsonl") return certified_json(*shown, x, label, o.format == "jsonl");
+  const TextForm form(BallText::certified);
+  return report_text(*shown, x.analysis, label + " (only certified digits are printed)",
+                     o.digits > 0 ? o.digits : kCertifiedTextDigits) +
+         decisions_text(spec, x);
 }
 
 }  // namespace impact3d::io

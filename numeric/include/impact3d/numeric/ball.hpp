@@ -149,6 +149,9 @@ Ball operator/(const Ball& a, const Ball& b);
 
 // a < b (strict) or a <= b, as the header says.
 bool ball_less(const Ball& a, const Ball& b, bool strict);
+// |x| <= tol as a decision: undecided where the ball of tol - |x| holds 0, and then true (the zero
+// branch) when x's ball holds 0, the exact value being possibly zero (rounding.hpp, within_rounding).
+bool ball_within(const Ball& x, const Ball& tol);
 inline bool operator<(const Ball& a, const Ball& b) { return ball_less(a, b, true); }
 inline bool operator<=(const Ball& a, const Ball& b) { return ball_less(a, b, false); }
 inline bool operator>(const Ball& a, const Ball& b) { return ball_less(b, a, true); }
@@ -186,6 +189,7 @@ struct EnclosureTraits<Ball> {
   static constexpr bool is_enclosure = true;
   static Ball spd_condition(const Mat3<Ball>& M);
   static long bits() { return ball_bits; }
+  static bool within(const Ball& x, const Ball& tol) { return ball_within(x, tol); }
 };
 
 }  // namespace impact3d

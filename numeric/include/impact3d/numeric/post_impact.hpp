@@ -82,8 +82,7 @@ inline const char* axis_change_name(AxisChange c) {
 
 template <typename Scalar>
 AxisChange axis_change(const Scalar& before, const Scalar& after, const Scalar& tol) {
-  using std::abs;
-  const bool was = abs(before) > tol, is = abs(after) > tol;
+  const bool was = rounding::beyond_rounding(before, tol), is = rounding::beyond_rounding(after, tol);
   if (!was) return is ? AxisChange::started : AxisChange::none;
   if (!is) return AxisChange::stopped;
   return (before > Scalar(0)) == (after > Scalar(0)) ? AxisChange::continued : AxisChange::reversed;
@@ -146,18 +145,19 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
     out.sliding_before = hypot(out.V_ri.y(), out.V_ri.z());
     out.sliding_after = hypot(out.V_rf.y(), out.V_rf.z());
     const DecisionName<Scalar> name(decision_names::swerve);
-    if (out.sliding_before > tol) {
+    if (rounding::beyond_rounding(out.sliding_before, tol)) {
       const Scalar cross = out.V_ri.y() * out.V_rf.z() - out.V_ri.z() * out.V_rf.y();
       const Scalar dot = out.V_ri.y() * out.V_rf.y() + out.V_ri.z() * out.V_rf.z();
       out.swerve_speed = cross / out.sliding_before;
       out.sliding_along = dot / out.sliding_before;
-      if (out.sliding_after > tol) {
+      if (rounding::beyond_rounding(out.sliding_after, tol)) {
         // A component within rounding of zero is zero (the report's rule): the final sliding is then on
         // the line, or square to it, exactly; and the angle keeps no kink of |along| at along = 0.
-        if (abs(*out.swerve_speed) <= tol) out.swerve_deg = Scalar(0);
-        else if (abs(*out.sliding_along) <= tol) out.swerve_deg = Scalar(cross > Scalar(0) ? 90 : -90);
+        const bool along_zero = rounding::within_rounding(*out.sliding_along, tol);
+        if (rounding::within_rounding(*out.swerve_speed, tol)) out.swerve_deg = Scalar(0);
+        else if (along_zero) out.swerve_deg = Scalar(cross > Scalar(0) ? 90 : -90);
         else out.swerve_deg = degrees(Scalar(atan2(cross, abs(dot))));
-        out.reversed = *out.sliding_along < -tol;
+        out.reversed = !along_zero && *out.sliding_along < Scalar(0);
       }
     }
   }
@@ -172,8 +172,9 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
   bool separating, penetrating;
   {
     const DecisionName<Scalar> name(decision_names::volume);
-    separating = out.V_rf.x() < -tol;
-    penetrating = out.V_rf.x() > tol;
+    const bool zero = rounding::within_rounding(out.V_rf.x(), tol);
+    separating = !zero && out.V_rf.x() < Scalar(0);
+    penetrating = !zero && out.V_rf.x() > Scalar(0);
   }
   if (!separating && !penetrating)
     out.volume = "max-compression plane";
@@ -201,12 +202,7 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
   // The loss is a difference of energies of size energy_before; at restitution 1 it is zero in exact
   // arithmetic.
   const Scalar energy_roundoff = rounding::energy_roundoff(kappa, out.energy_before);
-  bool gained;
-  {
-    const DecisionName<Scalar> name(decision_names::energy_loss_sign);
-    gained = out.energy_loss < -energy_roundoff;
-  }
-  if (gained) out.warnings.push_back({WarningCode::energy_gained, "kinetic energy gained: loss < 0"});
+  if (energy_loss_kind(out.energy_loss, energy_roundoff) < 0) out.warnings.push_back({WarningCode::energy_gained, "kinetic energy gained: loss < 0"});
 
   for (int i = 0; i < 2; ++i) out.motion[i] = vehicle_motion(s.body[i], out.after[i]);
   out.deformation = deformation(s.body, s.energy_share, out.energy_loss, energy_roundoff);

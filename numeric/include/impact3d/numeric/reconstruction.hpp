@@ -65,23 +65,38 @@ struct Deformation {
   std::array<std::optional<Scalar>, 2> ees;   // empty for a gain beyond rounding, or in exact arithmetic
 };
 
-// `roundoff`: the loss's rounding bound (rounding::energy_roundoff). A loss below -roundoff is a gain
-// (the energy_gained warning): no EES then. A loss within it is zero as far as the arithmetic can tell,
-// and so is the EES: sqrt would turn a rounding error e of the loss into sqrt(e), far above its bound.
+// What a computed energy loss is: -1 a gain beyond rounding (the energy_gained warning), 0 zero as far
+// as the arithmetic can tell (within_rounding: at restitution 1 without sliding it is zero), 1 a loss.
+// `roundoff` is the loss's rounding bound (rounding::energy_roundoff).
+template <typename Scalar>
+int energy_loss_kind(const Scalar& loss, const Scalar& roundoff) {
+  const DecisionName<Scalar> name(decision_names::energy_loss_sign);
+  if (rounding::within_rounding(loss, roundoff)) return 0;
+  return loss < Scalar(0) ? -1 : 1;
+}
+
+// A loss within rounding is zero as far as the arithmetic can tell, and so is the EES: sqrt would turn a
+// rounding error e of the loss into sqrt(e), far above its bound. A gain beyond rounding has no EES.
 template <typename Scalar>
 Deformation<Scalar> deformation(const std::array<RigidBody<Scalar>, 2>& body,
                                 const std::optional<std::array<Scalar, 2>>& given, const Scalar& loss,
                                 const Scalar& roundoff) {
   Deformation<Scalar> d;
   d.share = energy_share(body, given);
-  const DecisionName<Scalar> name(decision_names::energy_loss_sign);
-  const Scalar lost = loss > Scalar(0) ? loss : Scalar(0);
+  const int kind = energy_loss_kind(loss, roundoff);
+  Scalar lost;
+  if constexpr (is_enclosure_v<Scalar>) {
+    lost = kind > 0 ? loss : Scalar(0);
+  } else {
+    const DecisionName<Scalar> name(decision_names::energy_loss_sign);
+    lost = loss > Scalar(0) ? loss : Scalar(0);
+  }
   for (int i = 0; i < 2; ++i) {
     d.energy[i] = d.share[i] * lost;
     if constexpr (!is_exact_v<Scalar>) {
       using std::sqrt;
-      if (loss < -roundoff) continue;
-      d.ees[i] = loss <= roundoff ? Scalar(0) : Scalar(sqrt(Scalar(Scalar(2) * d.energy[i] / body[i].mass)));
+      if (kind < 0) continue;
+      d.ees[i] = kind == 0 ? Scalar(0) : Scalar(sqrt(Scalar(Scalar(2) * d.energy[i] / body[i].mass)));
     }
   }
   return d;

@@ -46,6 +46,30 @@ namespace impact3d::rounding {
 template <typename Scalar>
 inline constexpr bool tracks_rounding_v = !is_exact_v<Scalar> && !is_enclosure_v<Scalar>;
 
+// Whether x is zero as far as the arithmetic can tell: |x| <= tol, its rounding bound. For a ball the
+// comparison is a decision, and where x's ball holds 0 the exact value may be zero or not: then it is
+// undecided, the zero branch is taken, and the other is the alternative (ball.hpp, ball_within).
+template <typename Scalar>
+bool within_rounding(const Scalar& x, const Scalar& tol) {
+  if constexpr (is_enclosure_v<Scalar>) {
+    return EnclosureTraits<Scalar>::within(x, tol);
+  } else {
+    using std::abs;
+    return abs(x) <= tol;
+  }
+}
+
+// Its negation, but false for a NaN, as |x| > tol is.
+template <typename Scalar>
+bool beyond_rounding(const Scalar& x, const Scalar& tol) {
+  if constexpr (is_enclosure_v<Scalar>) {
+    return !EnclosureTraits<Scalar>::within(x, tol);
+  } else {
+    using std::abs;
+    return abs(x) > tol;
+  }
+}
+
 // ---- Results ------------------------------------------------------------------------------------------
 
 // The roundings on each path from the decimal inputs to an impulse that do not cancel: the solve's
