@@ -1,6 +1,8 @@
 #include "impact3d/verification/reference_proof.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -77,34 +79,77 @@ const json* at_path(const json& doc, const std::string& path) {
   return node;
 }
 
+// A field of the reference: a number's literal, or another value (a string, a boolean, a null).
+struct Field {
+  std::string path;
+  std::string literal;     // numbers
+  const json* value = nullptr;  // the rest
+};
+
+// What a branch makes of a result's fields: proven, or the first field that is not.
+struct BranchCheck {
+  std::string failure;
+  std::vector<std::string> noise;
+  std::size_t proven = 0;
+  double widest = 0, zero_reach = 0;
+};
+
 class Prover {
  public:
   Prover(const std::string& certified, int digits) : cert_(json::parse(certified)), digits_(digits) {
     for (const auto& [path, bounds] : cert_.at("enclosures").items()) enclosures_.emplace(path, bounds);
-    for (const auto& r : cert_.at("results")) {
-      int undecided = 0;
-      for (const auto& d : r.value("decisions", json::array())) undecided += d.at("status") != "decided";
-      undecided_.push_back(undecided);
-    }
   }
 
-  // The paths of the numbers that are rounding noise (written 0 instead); empty `failure` when the rest
+  // The paths of the numbers that are rounding noise (to be written 0); failure() empty when the rest
   // is proven.
   std::vector<std::string> check(const std::string& text) {
-    std::vector<std::string> noise;
-    proven_ = 0, on_other_branch_ = 0, widest_ = 0, zero_reach_ = 0;
+    failure_.clear();
+    proven_ = 0, other_branch_ = 0, widest_ = 0, zero_reach_ = 0;
+    const json doc = json::parse(text);
+    // Fields by scope: the top level (-1) and each result.
+    std::map<long, std::vector<Field>> scopes;
+    double largest = 0;
     for (const auto& n : io::number_literals(text)) {
-      if (!failure_.empty()) break;
-      if (n.null || about_the_arithmetic(n.path) || n.path.rfind("certified.", 0) == 0) continue;
-      const std::string_view literal(text.data() + n.begin, n.end - n.begin);
-      switch (number(n.path, literal)) {
-        case Verdict::proven: ++proven_; break;
-        case Verdict::noise: noise.push_back(n.path); break;
-        case Verdict::other_branch: ++on_other_branch_; break;
-        case Verdict::unproven: failure_ = fmt::format("{}: {} is not within its certified enclosure {}", n.path, literal, enclosure_text(n.path)); break;
-      }
+      if (n.null || excluded(n.path)) continue;
+      Field f{n.path, text.substr(n.begin, n.end - n.begin), nullptr};
+      largest = std::max(largest, std::fabs(std::strtod(f.literal.c_str(), nullptr)));
+      scopes[scope(n.path)].push_back(std::move(f));
     }
-    if (failure_.empty()) others(json::parse(text), "");
+    others(doc, "", scopes);
+    // The 100-digit solve's rounding noise: far below what its 100 digits resolve of the document's
+    // largest number, and far above the noise itself (10^-98 of it at most).
+    noise_bound_ = kNoiseFraction * largest;
+    std::vector<std::string> noise;
+    for (const auto& [k, fields] : scopes) {
+      std::vector<std::string> branches = {k < 0 ? "" : fmt::format("results[{}]", k)};
+      if (k >= 0) {
+        const json& r = cert_.at("results").at(static_cast<std::size_t>(k));
+        bool settled = true;
+        for (const auto& d : r.value("decisions", json::array())) settled = settled && d.at("status") == "decided";
+        if (!settled)
+          for (std::size_t j = 0; j < r.value("alternatives", json::array()).size(); ++j)
+            branches.push_back(fmt::format("results[{}].alternatives[{}].result", k, j));
+      }
+      std::optional<BranchCheck> passed;
+      std::string first_failure;
+      for (std::size_t b = 0; b < branches.size() && !passed; ++b) {
+        BranchCheck c = on_branch(fields, k < 0 ? "" : fmt::format("results[{}]", k), branches[b]);
+        if (c.failure.empty()) {
+          passed = std::move(c);
+          other_branch_ += b > 0;
+        } else if (b == 0) {
+          first_failure = c.failure;
+        }
+      }
+      if (!passed) {
+        failure_ = first_failure;
+        return {};
+      }
+      proven_ += passed->proven;
+      widest_ = std::max(widest_, passed->widest);
+      zero_reach_ = std::max(zero_reach_, passed->zero_reach);
+      noise.insert(noise.end(), passed->noise.begin(), passed->noise.end());
+    }
     return noise;
   }
 
@@ -116,10 +161,15 @@ class Prover {
     w.key("numbers_proven").number([&](std::string& out) { out += std::to_string(proven_); });
     w.key("statement").string(fmt::format(
         "Each number written is the exact result for the inputs as written, correctly rounded to {} significant "
-        "digits; a number written 0 is within zero_reach of it. rounding_bound and residual_over_bound describe "
-        "the arithmetic of the 100-digit solve, not the result, and are not proven. A result with an undecided "
-        "decision (its \"decisions\") is proven on the branch it shows{}.",
-        digits_, on_other_branch_ ? fmt::format(" ({} of its fields on the other branch than the balls' midpoints)", on_other_branch_) : ""));
+        "digits; a number written 0 is within zero_reach of it. Strings, booleans and nulls are the certified "
+        "result's. A result with a decision the balls leave undecided (see its \"decisions\") is proven on one "
+        "branch throughout: {}. Not proven: rounding_bound and residual_over_bound, which describe the arithmetic "
+        "of the 100-digit solve, and the warnings, prose about each computation.",
+        digits_,
+        other_branch_ == 0 ? std::string("the branch shown, where a quantity whose ball holds 0 is zero and other "
+                                         "comparisons follow the balls' midpoints")
+                           : fmt::format("the branch shown, or for {} of the results the other branch of one decision "
+                                         "(the result's alternative)", other_branch_)));
     w.key("largest_relative_radius").string(fmt::format("{:.1e}", widest_));
     w.key("zero_reach").string(fmt::format("{:.1e}", zero_reach_));
     w.end_object();
@@ -138,86 +188,82 @@ class Prover {
   }
 
  private:
-  enum class Verdict { proven, noise, other_branch, unproven };
+  // 10^-90: ten digits above the 100-digit solve's unit roundoff.
+  static constexpr double kNoiseFraction = 1e-90;
 
   json cert_;
   int digits_;
   std::map<std::string, json> enclosures_;
-  std::vector<int> undecided_;
   std::string failure_;
-  std::size_t proven_ = 0, on_other_branch_ = 0;
-  double widest_ = 0, zero_reach_ = 0;
+  std::size_t proven_ = 0, other_branch_ = 0;
+  double widest_ = 0, zero_reach_ = 0, noise_bound_ = 0;
 
-  std::string enclosure_text(const std::string& path) const {
-    const auto it = enclosures_.find(path);
-    return it == enclosures_.end() ? std::string("(none)") : it->second.dump();
+  static bool excluded(const std::string& path) {
+    return about_the_arithmetic(path) || path.rfind("certified.", 0) == 0 || path.find(".decisions[") != std::string::npos;
   }
 
-  // The same field in each alternative of its result, where the result has an undecided decision.
-  std::vector<std::string> alternative_paths(const std::string& path) const {
-    std::vector<std::string> out;
+  static long scope(const std::string& path) {
     const auto r = in_result(path);
-    if (!r || r->first >= undecided_.size() || undecided_[r->first] == 0) return out;
-    const json* alternatives = at_path(cert_, fmt::format("results[{}].alternatives", r->first));
-    for (std::size_t j = 0; alternatives && j < alternatives->size(); ++j)
-      out.push_back(fmt::format("results[{}].alternatives[{}].result{}", r->first, j, r->second));
-    return out;
+    return r ? static_cast<long>(r->first) : -1;
   }
 
-  std::optional<std::pair<rational, rational>> bounds(const std::string& path) const {
-    const auto it = enclosures_.find(path);
-    if (it == enclosures_.end() || !it->second[0].is_string() || !it->second[1].is_string()) return std::nullopt;
-    return std::pair{exact(it->second[0].get<std::string>()), exact(it->second[1].get<std::string>())};
-  }
-
-  Verdict on(const std::string& path, std::string_view literal) {
-    const auto b = bounds(path);
-    if (!b) return Verdict::unproven;
-    const auto& [lo, hi] = *b;
-    const rational x = exact(literal);
-    if (lo <= 0 && 0 <= hi && abs(x) <= std::max(-lo, hi)) {
-      zero_reach_ = std::max(zero_reach_, rational(std::max(-lo, hi)).convert_to<double>());
-      return x == 0 ? Verdict::proven : Verdict::noise;
-    }
-    if (x == 0) return Verdict::unproven;
-    const auto [down, up] = rounding_interval(literal, digits_);
-    if (!(down < lo && hi < up)) return Verdict::unproven;
-    widest_ = std::max(widest_, rational((hi - lo) / (2 * abs(x))).convert_to<double>());
-    return Verdict::proven;
-  }
-
-  Verdict number(const std::string& path, std::string_view literal) {
-    const Verdict v = on(path, literal);
-    if (v != Verdict::unproven) return v;
-    for (const auto& other : alternative_paths(path))
-      if (const Verdict w = on(other, literal); w != Verdict::unproven) return w == Verdict::proven ? Verdict::other_branch : w;
-    return Verdict::unproven;
-  }
-
-  // Strings, booleans and nulls: the certified result's, or an undecided decision's other branch's.
-  void others(const json& node, const std::string& path) {
-    if (!failure_.empty()) return;
+  // Strings, booleans and nulls, by scope.
+  void others(const json& node, const std::string& path, std::map<long, std::vector<Field>>& scopes) const {
     if (node.is_object()) {
       for (const auto& [key, value] : node.items())
         if (key != "certified" && key != "decisions" && key != "warnings" && key != "precision" && key != "engine")
-          others(value, path.empty() ? key : path + "." + key);
+          others(value, path.empty() ? key : path + "." + key, scopes);
     } else if (node.is_array()) {
-      for (std::size_t i = 0; i < node.size(); ++i) others(node[i], fmt::format("{}[{}]", path, i));
+      for (std::size_t i = 0; i < node.size(); ++i) others(node[i], fmt::format("{}[{}]", path, i), scopes);
     } else if (!node.is_number()) {
-      const auto same = [&](const std::string& p) {
-        const json* c = at_path(cert_, p);
-        return c && *c == node;
-      };
-      if (same(path)) return;
-      for (const auto& other : alternative_paths(path))
-        if (same(other)) {
-          ++on_other_branch_;
-          return;
-        }
-      const json* c = at_path(cert_, path);
-      failure_ = fmt::format("{}: {} where the certified result has {}", path, io::printable(node.dump()),
-                             c ? io::printable(c->dump()) : std::string("nothing"));
+      scopes[scope(path)].push_back(Field{path, {}, &node});
     }
+  }
+
+  // Every field of one scope against the branch at `branch` (the scope's own path, or an alternative's).
+  BranchCheck on_branch(const std::vector<Field>& fields, const std::string& own, const std::string& branch) const {
+    BranchCheck c;
+    for (const auto& f : fields) {
+      const std::string there = branch + f.path.substr(own.size());
+      if (f.value) {
+        const json* v = at_path(cert_, there);
+        if (!v || *v != *f.value) {
+          c.failure = fmt::format("{}: {} where the certified result has {}", f.path, io::printable(f.value->dump()),
+                                  v ? io::printable(v->dump()) : std::string("nothing"));
+          return c;
+        }
+        continue;
+      }
+      if (!number(f, there, c)) {
+        const auto it = enclosures_.find(there);
+        c.failure = fmt::format("{}: {} is not proven by its certified enclosure {}", f.path, f.literal,
+                                it == enclosures_.end() ? std::string("(none)") : it->second.dump());
+        return c;
+      }
+    }
+    return c;
+  }
+
+  bool number(const Field& f, const std::string& there, BranchCheck& c) const {
+    const auto it = enclosures_.find(there);
+    if (it == enclosures_.end() || !it->second[0].is_string() || !it->second[1].is_string()) return false;
+    const rational lo = exact(it->second[0].get<std::string>()), hi = exact(it->second[1].get<std::string>());
+    const rational x = exact(f.literal);
+    if (lo <= 0 && 0 <= hi) {
+      // The exact value may be 0: a 0 written is within the ball's reach of it, and so is the noise
+      // of the 100-digit solve, written 0. Anything larger the ball cannot prove.
+      if (x != 0 && abs(x) > rational(noise_bound_)) return false;
+      if (x != 0) c.noise.push_back(f.path);
+      c.zero_reach = std::max(c.zero_reach, rational(std::max(-lo, hi)).convert_to<double>());
+      ++c.proven;
+      return true;
+    }
+    if (x == 0) return false;
+    const auto [down, up] = rounding_interval(f.literal, digits_);
+    if (!(down < lo && hi < up)) return false;
+    c.widest = std::max(c.widest, rational((hi - lo) / (2 * abs(x))).convert_to<double>());
+    ++c.proven;
+    return true;
   }
 };
 

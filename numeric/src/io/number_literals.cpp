@@ -47,8 +47,9 @@ struct Walk {
         if (v.get_object().get(o)) fail(path);
         for (auto field : o) {
           std::string_view key;
-          if (field.unescaped_key().get(key)) fail(path);
-          value(field.value(), path.empty() ? std::string(key) : path + "." + std::string(key));
+          od::value v;
+          if (field.unescaped_key().get(key) || field.value().get(v)) fail(path);
+          value(v, path.empty() ? std::string(key) : path + "." + std::string(key));
         }
         return;
       }

@@ -4,10 +4,12 @@
 // the balls could not decide. The text report prints only certified digits.
 #include "render_certified.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/number_literals.hpp"
@@ -54,8 +56,8 @@ void recognize_ties(const CaseSpec& spec, Engine engine, CertifiedAnalysis& x) {
           d.detail += same ? "; exact arithmetic: a tie (the compared quantities are equal), where both branches "
                              "give the same result"
                            : "; exact arithmetic: a tie (the compared quantity is exactly zero): the boundary case "
-                             "holds, which neither branch's category names; the result shows the midpoints' "
-                             "branch and \"alternatives\" the other";
+                             "holds; the result shows the branch taken (the zero branch where a quantity's ball holds "
+                             "0, which is that boundary case; else the midpoints') and \"alternatives\" the other";
         }
       if (same) std::erase_if(x.alternatives[k], [&](const CertifiedAlternative& a) { return a.decision == name; });
     }
@@ -221,16 +223,20 @@ std::string render_certified(const CaseSpec& spec, long bits, const RenderOption
         shown_run = &r;
         break;
       }
-    if (runs.size() > 1) {
-      const std::string note = fmt::format(
-          "; undecided at every precision from {} to {} bits, the difference's ball narrowing around 0: consistent "
-          "with an exact tie, which ball arithmetic cannot prove (nor exact arithmetic, where the case or the "
-          "quantity is not rational)",
-          shown_run->bits, runs.back().bits);
-      for (auto& list : shown_run->decisions)
-        for (auto& d : list)
-          if (d.status == DecisionStatus::undecided) d.detail += note;
-    }
+    for (std::size_t k = 0; k < shown_run->decisions.size(); ++k)
+      for (auto& d : shown_run->decisions[k]) {
+        if (d.status != DecisionStatus::undecided) continue;
+        std::vector<long> at;
+        for (const auto& r : runs) {
+          const auto names = undecided_names(r);
+          if (std::find(names.begin(), names.end(), std::pair{k, d.name}) != names.end()) at.push_back(r.bits);
+        }
+        if (at.size() > 1)
+          d.detail += fmt::format("; undecided at {} bits, the difference's ball narrowing around 0: consistent with "
+                                  "an exact tie, which ball arithmetic cannot prove (nor exact arithmetic, where the "
+                                  "case or the quantity is not rational)",
+                                  fmt::join(at, ", "));
+      }
   }
   const CertifiedAnalysis& x = *shown_run;
   const BallBits precision(x.bits);  // the digits printed are those of the run shown

@@ -8,6 +8,7 @@
 // of scalars.hpp); a "rounding" is one operation's relative error, at most eps, and the factors below
 // count roundings.
 //
+//   Zero          within_rounding, beyond_rounding (a ball that holds 0 is zero, undecided)
 //   Results       kResultRoundings, kTrustedFraction, spd_condition, spd_condition_bound, amplification,
 //                 amplification_bound, quotient_factor, relative_bound, agreement_bound, precision_for
 //   Solves        kSolveRoundings, solve_roundoff, velocity_scale, velocity_roundoff, energy_roundoff
