@@ -1,0 +1,28 @@
+# Type stubs of impact3d (the docstrings are in __init__.py).
+import os
+from typing import Any, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from ._impact3d import Case as Case, CaseError as CaseError
+
+PRECISIONS: tuple[str, ...]
+REGIMES: tuple[str, ...]
+WARNINGS: tuple[str, ...]
+STATUSES: tuple[str, ...]
+BATCH_COLUMNS: tuple[str, ...]
+BATCH_SIMD: str
+
+CaseLike = Union[str, os.PathLike[str], dict[str, Any], Case]
+Strategies = Optional[Union[str, dict[str, Any], Sequence[Union[str, dict[str, Any]]]]]
+Column = Union[float, npt.ArrayLike]
+
+def read_case(case: CaseLike) -> Case: ...
+def solve(case: CaseLike, strategies: Strategies = None, engine: str = "generated", precision: str = "double",
+          units: Optional[str] = None) -> dict[str, Any]: ...
+def solve_batch(jobs: int = 0, velocities: bool = False, **columns: Column) -> dict[str, Any]: ...
+def montecarlo(case: CaseLike, uncertainty: Union[str, os.PathLike[str], dict[str, Any]], strategies: Strategies = None,
+               precision: str = "double", engine: str = "generated", jobs: int = 0, samples: Optional[int] = None,
+               seed: Optional[int] = None, keep_samples: bool = False) -> dict[str, Any]: ...
+def sensitivity(case: CaseLike, strategies: Strategies = None, engine: str = "generated") -> dict[str, Any]: ...

@@ -1,0 +1,33 @@
+#include "case.hpp"
+
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/read_case.hpp"
+
+namespace impact3d::python {
+
+std::string cli_line(const std::string& source, const std::string& line) {
+  const bool named = source.empty() || line.rfind(source + ":", 0) == 0;
+  return io::printable(named ? line : source + ": " + line);
+}
+
+Case read_case_file(const std::string& path) {
+  return guarded(path, [&] {
+    Case c;
+    c.text = io::read_text_file(path);
+    c.spec = io::read_case(c.text);
+    c.source = path;
+    return c;
+  });
+}
+
+Case read_case_text(const std::string& text, const std::string& source) {
+  return guarded(source, [&] {
+    Case c;
+    c.spec = io::read_case(text);
+    c.text = text;
+    c.source = source;
+    return c;
+  });
+}
+
+}  // namespace impact3d::python

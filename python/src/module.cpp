@@ -1,0 +1,57 @@
+// The extension module impact3d._impact3d; the package impact3d (python/impact3d/) is its public face.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "case.hpp"
+#include "impact3d/io/montecarlo.hpp"
+#include "impact3d/io/render.hpp"
+#include "impact3d/numeric/lean.hpp"
+#include "solve.hpp"
+#include "solve_batch.hpp"
+#include "uncertainty.hpp"
+
+namespace py = pybind11;
+using namespace impact3d;
+using namespace impact3d::python;
+
+PYBIND11_MODULE(_impact3d, m) {
+  m.doc() = "impact3d's C++ library; use the package impact3d";
+  py::register_exception<InputError>(m, "CaseError", PyExc_ValueError);
+
+  py::class_<Case>(m, "Case")
+      .def_property_readonly("name", [](const Case& c) { return c.spec.name; })
+      .def_property_readonly("source", [](const Case& c) { return c.source; })
+      .def_property_readonly("text", [](const Case& c) { return c.text; })
+      .def("__repr__", [](const Case& c) {
+        return "<impact3d.Case " + py::repr(py::str(c.spec.name)).cast<std::string>() +
+               (c.source.empty() ? std::string() : " from " + c.source) + ">";
+      });
+  m.def("read_case_file", &read_case_file, py::arg("path"));
+  m.def("read_case_text", &read_case_text, py::arg("text"), py::arg("source") = "");
+
+  m.def("solve_json", &solve_json, py::arg("case"), py::arg("strategies"), py::arg("engine"), py::arg("precision"),
+        py::arg("units"), py::call_guard<py::gil_scoped_release>());
+  add_solve_batch(m);
+
+  py::class_<Uncertainty>(m, "Uncertainty")
+      .def(py::init<std::string, std::string>(), py::arg("text"), py::arg("source") = "")
+      .def_property_readonly("source", [](const Uncertainty& u) { return u.source; });
+  m.def("read_uncertainty_file", [](const std::string& path) {
+    return Uncertainty{guarded(path, [&] { return io::read_text_file(path); }), path};
+  });
+  m.def("montecarlo", &montecarlo, py::arg("case"), py::arg("uncertainty"), py::arg("strategies"), py::arg("precision"),
+        py::arg("engine"), py::arg("jobs"), py::arg("samples"), py::arg("seed"), py::arg("keep_samples"));
+  m.def("sensitivity_json", &sensitivity_json, py::arg("case"), py::arg("strategies"), py::arg("engine"),
+        py::call_guard<py::gil_scoped_release>());
+
+  py::list precisions;
+  for (const auto& p : io::precision_names()) precisions.append(p);
+  m.attr("PRECISIONS") = py::tuple(precisions);
+  py::list regimes, warnings;
+  for (const auto r : io::kRegimeNames) regimes.append(std::string(r));
+  for (const auto w : io::kWarningNames) warnings.append(std::string(w));
+  m.attr("REGIMES") = py::tuple(regimes);
+  m.attr("WARNINGS") = py::tuple(warnings);
+  m.attr("STATUSES") = py::make_tuple(status_name(Status::solved), status_name(Status::not_approaching),
+                                      status_name(Status::singular), "invalid");
+}

@@ -1,0 +1,252 @@
+#include "solve_batch.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "impact3d/io/escape.hpp"
+#include "impact3d/numeric/batch/columns.hpp"
+#include "impact3d/numeric/lean.hpp"
+
+namespace py = pybind11;
+
+namespace impact3d::python {
+namespace {
+
+using Column = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// A row's status beyond lean.hpp's: its inputs are not a collision (an impact3d.CaseError for a case).
+constexpr std::uint8_t kInvalid = 3;
+constexpr std::size_t kBlock = 4096;  // rows a thread takes at a time
+
+const char* const kVehicleColumns[] = {"mass", "J00", "J01", "J02", "J10", "J11", "J12", "J20", "J21", "J22", "yaw",
+                                       "pitch", "roll", "v0",  "v1",  "v2",  "w0",  "w1",  "w2",  "r0",  "r1",  "r2"};
+const char* const kContactColumns[] = {"normal_yaw", "normal_pitch", "tangent_roll", "restitution", "mu"};
+
+bool required(const std::string& name) {
+  for (const char* r : {"mass_", "J00_", "J11_", "J22_", "yaw_", "v0_", "v1_", "r0_", "r1_"})
+    if (name.rfind(r, 0) == 0) return true;
+  return name == "normal_yaw" || name == "restitution" || name == "mu";
+}
+
+// Every column by name: the caller's arrays as they are (no copy when they are contiguous doubles), a
+// number repeated on every row, or 0.
+class Columns {
+ public:
+  explicit Columns(const py::dict& given) {
+    std::vector<std::string> names;
+    for (int i = 1; i <= 2; ++i)
+      for (const char* c : kVehicleColumns) names.push_back(fmt::format("{}_{}", c, i));
+    for (const char* c : kContactColumns) names.emplace_back(c);
+    for (const auto& [key, value] : given) {
+      const std::string name = py::str(key);
+      if (std::find(names.begin(), names.end(), name) == names.end())
+        throw py::type_error(fmt::format("solve_batch: no column {} (the columns are those of "
+                                         "impact3d.BATCH_COLUMNS)", io::quoted(name)));
+      Column a = Column::ensure(value);
+      if (!a) throw py::type_error(fmt::format("solve_batch: {} is not numbers", name));
+      if (a.ndim() > 1) throw py::value_error(fmt::format("solve_batch: {} has {} dimensions; a column has one", name, a.ndim()));
+      if (a.ndim() == 1) {
+        if (rows_ && *rows_ != static_cast<std::size_t>(a.shape(0)))
+          throw py::value_error(fmt::format("solve_batch: {} has {} rows, another column {}", name, a.shape(0), *rows_));
+        rows_ = static_cast<std::size_t>(a.shape(0));
+      }
+      given_[name] = std::move(a);
+    }
+    for (const auto& name : names)
+      if (required(name) && !given_.count(name))
+        throw py::type_error(fmt::format("solve_batch: the column {} is required", name));
+    const std::size_t n = rows();
+    for (const auto& name : names) {
+      const auto it = given_.find(name);
+      if (it != given_.end() && it->second.ndim() == 1) {
+        data_[name] = it->second.data();
+      } else {
+        filled_.emplace_back(n, it == given_.end() ? 0.0 : *it->second.data());
+        data_[name] = filled_.back().data();
+      }
+    }
+  }
+
+  std::size_t rows() const { return rows_.value_or(1); }
+  const double* operator[](const std::string& name) const { return data_.at(name); }
+  bool given(const std::string& name) const { return given_.count(name) > 0; }
+
+ private:
+  std::optional<std::size_t> rows_;
+  std::map<std::string, Column> given_;
+  std::vector<std::vector<double>> filled_;
+  std::map<std::string, const double*> data_;
+};
+
+// Why row i is not a collision, as the case reader would say it of a case; nullptr when it is one.
+struct RowCheck {
+  const batch::CollisionColumns& in;
+  const double* lower[2][3];  // J10, J20, J21 of each vehicle, when given (else nullptr)
+
+  const char* operator()(std::size_t i) const {
+    for (int b = 0; b < 2; ++b) {
+      const batch::VehicleColumns& v = in.vehicle[b];
+      const double J[6] = {v.J_B[0][i], v.J_B[1][i], v.J_B[2][i], v.J_B[3][i], v.J_B[4][i], v.J_B[5][i]};
+      double all[13 + 6] = {v.mass[i], v.yaw_deg[i], v.pitch_deg[i], v.roll_deg[i]};
+      for (int k = 0; k < 3; ++k) all[4 + k] = v.v_W[k][i], all[7 + k] = v.w_B[k][i], all[10 + k] = v.p_CgIc_B[k][i];
+      for (int k = 0; k < 6; ++k) all[13 + k] = J[k];
+      for (double x : all)
+        if (!std::isfinite(x)) return b == 0 ? "vehicle 1: a value is not finite" : "vehicle 2: a value is not finite";
+      if (!(v.mass[i] > 0)) return b == 0 ? "mass_1: not positive" : "mass_2: not positive";
+      const double upper[3] = {J[batch::xy], J[batch::xz], J[batch::yz]};
+      for (int k = 0; k < 3; ++k)
+        if (lower[b][k] && lower[b][k][i] != upper[k]) return b == 0 ? "J_1: not symmetric" : "J_2: not symmetric";
+      // Sylvester's criterion on the leading minors.
+      const double m1 = J[batch::xx], m2 = J[batch::xx] * J[batch::yy] - J[batch::xy] * J[batch::xy];
+      const double m3 = J[batch::xx] * (J[batch::yy] * J[batch::zz] - J[batch::yz] * J[batch::yz]) -
+                        J[batch::xy] * (J[batch::xy] * J[batch::zz] - J[batch::yz] * J[batch::xz]) +
+                        J[batch::xz] * (J[batch::xy] * J[batch::yz] - J[batch::yy] * J[batch::xz]);
+      if (!(m1 > 0 && m2 > 0 && m3 > 0)) return b == 0 ? "J_1: not positive definite" : "J_2: not positive definite";
+    }
+    for (const double x : {in.normal_yaw_deg[i], in.normal_pitch_deg[i], in.tangent_roll_deg[i], in.restitution[i], in.mu[i]})
+      if (!std::isfinite(x)) return "contact: a value is not finite";
+    if (!(in.restitution[i] >= 0 && in.restitution[i] <= 1)) return "restitution: outside [0, 1]";
+    if (!(in.mu[i] >= 0)) return "mu: negative";
+    return nullptr;
+  }
+};
+
+template <typename T>
+py::array_t<T> column_out(std::size_t rows) {
+  return py::array_t<T>(static_cast<py::ssize_t>(rows));
+}
+
+py::array_t<double> rows_by_3(std::size_t rows) {
+  return py::array_t<double>({static_cast<py::ssize_t>(rows), py::ssize_t{3}});
+}
+
+}  // namespace
+
+py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
+  const Columns c(given);
+  const std::size_t n = c.rows();
+  batch::CollisionColumns in;
+  in.rows = n;
+  for (int b = 0; b < 2; ++b) {
+    const auto col = [&](const char* name) { return c[fmt::format("{}_{}", name, b + 1)]; };
+    batch::VehicleColumns& v = in.vehicle[b];
+    v.mass = col("mass");
+    const char* entries[6] = {"J00", "J01", "J02", "J11", "J12", "J22"};  // by InertiaEntry
+    for (int k = 0; k < 6; ++k) v.J_B[k] = col(entries[k]);
+    v.yaw_deg = col("yaw"), v.pitch_deg = col("pitch"), v.roll_deg = col("roll");
+    for (int k = 0; k < 3; ++k) {
+      v.v_W[k] = col(fmt::format("v{}", k).c_str());
+      v.w_B[k] = col(fmt::format("w{}", k).c_str());
+      v.p_CgIc_B[k] = col(fmt::format("r{}", k).c_str());
+    }
+  }
+  in.normal_yaw_deg = c["normal_yaw"], in.normal_pitch_deg = c["normal_pitch"], in.tangent_roll_deg = c["tangent_roll"];
+  in.restitution = c["restitution"], in.mu = c["mu"];
+  RowCheck check{in, {}};
+  for (int b = 0; b < 2; ++b) {
+    const char* lower[3] = {"J10", "J20", "J21"};
+    for (int k = 0; k < 3; ++k) {
+      const std::string name = fmt::format("{}_{}", lower[k], b + 1);
+      check.lower[b][k] = c.given(name) ? c[name] : nullptr;
+    }
+  }
+
+  // P_C as a (3, n) block, handed out as its (n, 3) transpose: each component a contiguous column.
+  py::array_t<double> P_C({py::ssize_t{3}, static_cast<py::ssize_t>(n)});
+  auto status = column_out<std::uint8_t>(n), regime = column_out<std::uint8_t>(n);
+  auto warnings = column_out<WarningSet>(n);
+  std::vector<py::array_t<double>> states;  // P_W, v_1, w_1, v_2, w_2: (n, 3)
+  if (velocities)
+    for (int k = 0; k < 5; ++k) states.push_back(rows_by_3(n));
+  batch::ImpulseColumns out;
+  double* const P_C_data = P_C.mutable_data();
+  for (int k = 0; k < 3; ++k) out.P_C[k] = P_C_data + static_cast<std::size_t>(k) * n;
+  out.status = status.mutable_data();
+  out.regime = regime.mutable_data();
+  out.warnings = warnings.mutable_data();
+  std::vector<double*> state_data;
+  for (auto& s : states) state_data.push_back(s.mutable_data());
+  std::vector<std::pair<std::size_t, const char*>> problems;
+
+  {
+    py::gil_scoped_release released;
+    const unsigned threads = std::max(1u, std::min<unsigned>(jobs ? jobs : std::thread::hardware_concurrency(),
+                                                              static_cast<unsigned>((n + kBlock - 1) / kBlock)));
+    std::atomic<std::size_t> next{0};
+    std::vector<std::vector<std::pair<std::size_t, const char*>>> found(threads);
+    const auto work = [&](unsigned t) {
+      for (std::size_t begin; (begin = next.fetch_add(kBlock)) < n;) {
+        const std::size_t end = std::min(n, begin + kBlock);
+        if (velocities) {
+          for (std::size_t i = begin; i < end; ++i) {
+            const LeanSolution<double> r = solve_lean(scene_of(batch::row_of(in, i)), Strategy<double>(PcCrash<double>{in.mu[i]}),
+                                                      Want::velocities);
+            const bool solved = r.status == Status::solved;
+            const double nan = std::numeric_limits<double>::quiet_NaN();
+            const Vec3<double>* vectors[5] = {&r.P_W, &r.v_W[0], &r.w_B[0], &r.v_W[1], &r.w_B[1]};
+            for (int k = 0; k < 3; ++k) {
+              out.P_C[k][i] = solved ? r.impulse.P_C(k) : nan;
+              for (int s = 0; s < 5; ++s) state_data[s][3 * i + k] = solved ? (*vectors[s])(k) : nan;
+            }
+            out.status[i] = static_cast<std::uint8_t>(r.status);
+            out.regime[i] = static_cast<std::uint8_t>(r.impulse.regime);
+            out.warnings[i] = r.warnings;
+          }
+        } else {
+          batch::pc_crash_columns(in, out, begin, end);
+        }
+        // A row that is not a collision is flagged, whatever the arithmetic made of it.
+        for (std::size_t i = begin; i < end; ++i)
+          if (const char* problem = check(i)) {
+            found[t].emplace_back(i, problem);
+            for (int k = 0; k < 3; ++k) out.P_C[k][i] = std::numeric_limits<double>::quiet_NaN();
+            for (auto* s : state_data)
+              for (int k = 0; k < 3; ++k) s[3 * i + k] = std::numeric_limits<double>::quiet_NaN();
+            out.status[i] = kInvalid;
+            out.warnings[i] = 0;
+          }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& th : pool) th.join();
+    for (const auto& f : found) problems.insert(problems.end(), f.begin(), f.end());
+    std::sort(problems.begin(), problems.end());
+  }
+
+  py::dict result;
+  result["P_C"] = P_C.attr("T");
+  result["status"] = status;
+  result["regime"] = regime;
+  result["warnings"] = warnings;
+  if (velocities) {
+    const char* names[5] = {"P_W", "v_1", "w_1", "v_2", "w_2"};
+    for (int s = 0; s < 5; ++s) result[names[s]] = states[static_cast<std::size_t>(s)];
+  }
+  py::dict flagged;
+  for (const auto& [row, problem] : problems) flagged[py::int_(row)] = py::str(problem);
+  result["problems"] = flagged;
+  return result;
+}
+
+void add_solve_batch(py::module_& m) {
+  m.def("_solve_batch", &solve_batch, py::arg("columns"), py::arg("jobs") = 0u, py::arg("velocities") = false);
+  py::list names;
+  for (int i = 1; i <= 2; ++i)
+    for (const char* c : kVehicleColumns) names.append(fmt::format("{}_{}", c, i));
+  for (const char* c : kContactColumns) names.append(c);
+  m.attr("BATCH_COLUMNS") = py::tuple(names);
+  m.attr("BATCH_SIMD") = batch::simd_name();
+}
+
+}  // namespace impact3d::python

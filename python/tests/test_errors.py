@@ -1,0 +1,50 @@
+"""Bad input raises impact3d.CaseError (a ValueError) whose message is the command line's line: for every
+file of the bad-input corpus (tests/bad_input/, whose expected.tsv holds each line the CLI prints after
+"impact3d: error: FILE: ", reviewed by hand and checked against the CLI by exam_bad_input), at double and
+at 100 digits; bad options raise ValueError."""
+import pytest
+
+import impact3d
+from conftest import SOURCE
+
+BAD = SOURCE / "tests" / "bad_input"
+
+
+def expected_lines():
+    lines = {}
+    for line in (BAD / "expected.tsv").read_text(encoding="utf-8").splitlines():
+        if line and not line.startswith("#"):
+            name, text = line.split("\t", 1)
+            lines[name] = text
+    return lines
+
+
+@pytest.mark.parametrize("precision", ["double", "100"])
+def test_the_bad_input_corpus_raises_the_clis_messages(precision):
+    expected = expected_lines()
+    files = sorted(BAD.glob("*.json"))
+    assert len(files) == len(expected) > 50
+    for f in files:
+        with pytest.raises(impact3d.CaseError) as raised:
+            impact3d.solve(str(f), precision=precision)
+        assert isinstance(raised.value, ValueError)
+        assert str(raised.value) == f"{f}: {expected[f.name]}", f.name
+
+
+def test_a_dict_is_named_by_its_json_path():
+    with pytest.raises(impact3d.CaseError) as raised:
+        impact3d.read_case({"name": "x", "units": "SI", "vehicles": []})
+    assert str(raised.value).startswith("$.vehicles")
+
+
+def test_bad_options(fig8):
+    with pytest.raises(ValueError, match="^precision: "):
+        impact3d.solve(fig8, precision="bogus")
+    with pytest.raises(ValueError, match="^engine: "):
+        impact3d.solve(fig8, engine="fast")
+    with pytest.raises(ValueError, match="^units: "):
+        impact3d.solve(fig8, units="furlongs")
+    with pytest.raises(impact3d.CaseError, match=r"--strategy\[0\]"):
+        impact3d.solve(fig8, strategies="pc-crash:mu=-1")
+    with pytest.raises(TypeError):
+        impact3d.read_case(42)

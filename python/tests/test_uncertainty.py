@@ -1,0 +1,42 @@
+"""impact3d.montecarlo and impact3d.sensitivity against the command line's documents on Figure 8, and the
+kept samples against the summary they were summarized into."""
+import numpy as np
+
+import impact3d
+from conftest import SOURCE, cli, cli_document
+
+UNCERTAINTY = SOURCE / "examples" / "uncertainty" / "fig8_side_impact.json"
+
+
+def test_montecarlo_equals_the_cli(fig8):
+    ours = impact3d.montecarlo(fig8, UNCERTAINTY, samples=2000, seed=3, jobs=2)
+    theirs = cli_document(cli("montecarlo", fig8, "--uncertainty", UNCERTAINTY, "--samples", 2000, "--seed", 3,
+                              "--format", "json"), "double")
+    assert ours == theirs
+    assert ours["samples"] == 2000
+
+
+def test_kept_samples_are_what_was_summarized(fig8):
+    doc = impact3d.montecarlo(fig8, UNCERTAINTY, samples=3000, seed=5, keep_samples=True)
+    sampled = doc.pop("sampled")
+    assert list(sampled["inputs"]) == doc["inputs"]
+    checked = 0
+    for k, result in enumerate(doc["results"]):
+        values = sampled["results"][k]["vehicles[1].delta_v_magnitude"]
+        assert values.shape == (3000,)
+        solved = values[~np.isnan(values)]
+        summary = result["outputs"]["vehicles[1].delta_v_magnitude"]
+        # The summary's mean is the same samples' mean: equal to rounding (n additions of values ~10 m/s).
+        assert abs(np.mean(solved) - summary["mean"]) <= 3000 * np.finfo(float).eps * np.max(solved)
+        checked += 1
+    assert checked == 4
+
+
+def test_sensitivity_equals_the_cli(fig8):
+    assert impact3d.sensitivity(fig8) == cli_document(cli("sensitivity", fig8, "--format", "json"), "double")
+
+
+def test_an_uncertainty_dict_is_named_by_its_path(fig8):
+    import pytest
+    with pytest.raises(impact3d.CaseError, match=r"^\$\.inputs"):
+        impact3d.montecarlo(fig8, {"samples": 10, "inputs": [{"path": "$.nowhere", "distribution": "normal", "mean": 1, "sd": 1}]})
