@@ -5,14 +5,9 @@ from typing import Any, Optional, Sequence, Union
 import numpy as np
 import numpy.typing as npt
 
-from ._impact3d import Case as Case, CaseError as CaseError
-
-PRECISIONS: tuple[str, ...]
-REGIMES: tuple[str, ...]
-WARNINGS: tuple[str, ...]
-STATUSES: tuple[str, ...]
-BATCH_COLUMNS: tuple[str, ...]
-BATCH_SIMD: str
+from ._impact3d import (BATCH_COLUMNS as BATCH_COLUMNS, BATCH_SIMD as BATCH_SIMD, PRECISIONS as PRECISIONS,
+                        REGIMES as REGIMES, STATUSES as STATUSES, WARNINGS as WARNINGS, Case as Case,
+                        CaseError as CaseError)
 
 CaseLike = Union[str, os.PathLike[str], dict[str, Any], Case]
 Strategies = Optional[Union[str, dict[str, Any], Sequence[Union[str, dict[str, Any]]]]]
