@@ -14,7 +14,6 @@ Units are the case's (SI: m, kg, kg m^2, m/s, rad/s, N s, J; US: ft, lb, slug ft
 ft lbf) unless `units` asks for others; angles are in degrees. Bad input raises CaseError (a
 ValueError) whose message is the command line's one-line message: the file, the JSON path, the problem.
 """
-import json
 import os
 
 from . import _convert
@@ -28,15 +27,16 @@ __all__ = ["read_case", "solve", "solve_batch", "montecarlo", "sensitivity", "Ca
 
 def _json_text(value, what):
     try:
-        return json.dumps(value, allow_nan=False)
-    except (TypeError, ValueError) as e:
-        raise TypeError(f"{what}: not JSON ({e})") from None
+        return _convert.case_json(value)
+    except _convert.InputError as e:
+        raise CaseError(f"{what}: {e}" if what != "case" else str(e)) from None
 
 
 def read_case(case):
     """The case `case`, read and checked: a path to a case file, a dict in the case format
-    (docs/case-format.md), or a Case already read. Raises CaseError for a case the command line would
-    refuse, with its message."""
+    (docs/case-format.md; numbers as ints, floats, Decimals, which keep every digit, or NumPy scalars),
+    or a Case already read. Raises CaseError for a case the command line would refuse, with its message;
+    for a dict, the JSON path of the problem ("$.vehicles[0].mass: ...")."""
     if isinstance(case, Case):
         return case
     if isinstance(case, dict):
@@ -90,11 +90,18 @@ def solve_batch(jobs=0, velocities=False, **columns):
     Returns a dict of arrays, one row per input row:
         P_C (n, 3) [N s], the impulse on vehicle 1 in contact axes (n, t, z); NaN unless solved;
         status: index into STATUSES (solved, not approaching, singular, invalid);
-        regime: index into REGIMES, when solved; warnings: bit k set for WARNINGS[k];
+        regime: index into REGIMES, or 255 for a row not solved; warnings: bit k set for WARNINGS[k];
         problems: {row: why} for each invalid row (it is flagged, not dropped);
     and with velocities=True (the scalar path, row by row) also P_W (n, 3) [N s] in world axes, v_1,
     v_2 (n, 3) [m/s] the CG velocities after (world) and w_1, w_2 (n, 3) [rad/s] the angular velocities
-    after (body). Rows agree with solve's pc-crash result to a few units in the last place."""
+    after (body). Rows agree with solve's pc-crash result to a few units in the last place.
+
+    Columns must be real numbers (integers, floats or booleans; not strings, complex numbers, dates or
+    masked arrays). The call reads the caller's arrays in place while other Python threads run: do not
+    change them until it returns. A row is invalid, as the case reader would refuse it, when a value is not
+    finite or beyond the case format's magnitudes (1e12, and non-zero below 1e-100), a mass is not
+    positive, an inertia tensor is not symmetric positive definite, restitution is outside [0, 1] or mu
+    is negative."""
     return _impact3d._solve_batch(columns, jobs, velocities)
 
 
@@ -114,7 +121,7 @@ def montecarlo(case, uncertainty, strategies=None, precision="double", engine="g
     and rejections' counts, and the first-order propagation beside them. Reproducible: sample i is the
     same at any `jobs` (0: every core). `samples`, `seed` override the file's.
 
-    keep_samples=True adds "sampled": {"inputs": {path: array}, "results": [{"regime": int8 array (REGIMES
+    Counts and the seed are ints, the statistics floats. keep_samples=True adds "sampled": {"inputs": {path: array}, "results": [{"regime": int8 array (REGIMES
     index, -1 not solved), "rejected": uint16 array (0 none, r + 1 reasons[r]), output path: array
     (NaN where rejected or undefined)}], "reasons": [...]}.
 
@@ -122,7 +129,7 @@ def montecarlo(case, uncertainty, strategies=None, precision="double", engine="g
     c = read_case(case)
     text, sampled = _impact3d.montecarlo(c, _uncertainty(uncertainty), _strategies(strategies), precision, engine,
                                          jobs, samples, seed, keep_samples)
-    doc = _convert.document(text, "double")
+    doc = _convert.summary(text)
     if sampled is not None:
         doc["sampled"] = sampled
     return doc
@@ -134,4 +141,4 @@ def sensitivity(case, strategies=None, engine="generated"):
     each regime's margin to its switch, as `impact3d sensitivity --format json` prints it
     (many-cases.md). Derivatives are in the case's units (output unit per input unit)."""
     c = read_case(case)
-    return _convert.document(_impact3d.sensitivity_json(c, _strategies(strategies), engine), "double")
+    return _convert.summary(_impact3d.sensitivity_json(c, _strategies(strategies), engine))

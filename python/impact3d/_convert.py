@@ -1,11 +1,19 @@
-"""The result documents' numbers as Python numbers, as their precision allows: floats at double (17
-significant digits read back exactly), Decimals at the other precisions (every digit written), and the
-exact precision's rational quantities (its "exact" object, strings p/q) as Fractions. Nothing goes
-through a double that was not one.
+"""The program's JSON documents as Python objects, and Python objects as case JSON.
+
+Result documents: floats at double (17 significant digits read back exactly; every number of a result
+is a physical quantity, so an integral one written "975" is a float too), Decimals at the other
+precisions (every digit written), and the exact precision's rational quantities (its "exact" object,
+strings p/q) as Fractions. Nothing goes through a double that was not one. The Monte Carlo and
+sensitivity documents also hold counts and seeds: integers there stay ints.
 """
 import json
+import math
+import re
 from decimal import Decimal
 from fractions import Fraction
+from numbers import Integral, Real
+
+_RATIONAL = re.compile(r"-?[0-9]+(/[0-9]+)?")
 
 
 def _fractions(node):
@@ -13,16 +21,13 @@ def _fractions(node):
         return {k: _fractions(v) for k, v in node.items()}
     if isinstance(node, list):
         return [_fractions(v) for v in node]
-    if isinstance(node, str):
-        try:
-            return Fraction(node)
-        except ValueError:
-            return node  # a note, or why a quantity is not rational
-    return node
+    if isinstance(node, str) and _RATIONAL.fullmatch(node):
+        return Fraction(node)
+    return node  # a note, or why a quantity is not rational
 
 
 def document(text, precision="double"):
-    """The JSON document `text`, written at `precision`, with its numbers as that precision allows."""
+    """The result document `text`, written at `precision`, with its numbers as that precision allows."""
     if precision == "double":
         return json.loads(text, parse_int=float)
     doc = json.loads(text, parse_float=Decimal, parse_int=Decimal)
@@ -32,3 +37,42 @@ def document(text, precision="double"):
         doc["enclosures"] = {path: [None if b is None else Decimal(b) for b in bounds]
                              for path, bounds in doc["enclosures"].items()}
     return doc
+
+
+def summary(text):
+    """A Monte Carlo or sensitivity document: floats, with its counts and seeds as ints."""
+    return json.loads(text)
+
+
+class InputError(ValueError):
+    """A value with no JSON form, at its JSON path."""
+
+
+def case_json(value, path="$"):
+    """`value` (dicts, lists, tuples, strings, booleans, None, ints, floats, Decimals, NumPy scalars) as
+    JSON text; a Decimal keeps every digit. Raises InputError naming the path of what has no JSON form."""
+    if isinstance(value, dict):
+        items = []
+        for k, v in value.items():
+            if not isinstance(k, str):
+                raise InputError(f"{path}: a key that is not a string: {k!r}")
+            items.append(json.dumps(k) + ": " + case_json(v, f"{path}.{k}"))
+        return "{" + ", ".join(items) + "}"
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(case_json(v, f"{path}[{i}]") for i, v in enumerate(value)) + "]"
+    if value is None or isinstance(value, (bool, str)):
+        return json.dumps(value)
+    if type(value).__name__ == "bool_":  # NumPy's
+        return "true" if value else "false"
+    if isinstance(value, Decimal):
+        if not value.is_finite():
+            raise InputError(f"{path}: not a finite number: {value}")
+        return str(value)
+    if isinstance(value, Integral):
+        return str(int(value))
+    if isinstance(value, Real):
+        x = float(value)
+        if not math.isfinite(x):
+            raise InputError(f"{path}: not a finite number: {x}")
+        return repr(x)
+    raise InputError(f"{path}: {type(value).__name__} has no JSON form")

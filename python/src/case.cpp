@@ -6,7 +6,8 @@
 namespace impact3d::python {
 
 std::string cli_line(const std::string& source, const std::string& line) {
-  const bool named = source.empty() || line.rfind(source + ":", 0) == 0;
+  // An option's problem ("--strategy[0].mu: ...") is not the file's.
+  const bool named = source.empty() || line.rfind(source + ":", 0) == 0 || line.rfind("--", 0) == 0;
   return io::printable(named ? line : source + ": " + line);
 }
 

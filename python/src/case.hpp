@@ -9,6 +9,9 @@
 
 namespace impact3d::python {
 
+// The most threads a call may ask for, as the CLI's --jobs.
+inline constexpr unsigned kMaxJobs = 1024;
+
 struct Case {
   io::CaseSpec spec;   // read and checked
   std::string text;    // as read: montecarlo and sensitivity read it again
@@ -20,7 +23,8 @@ struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The CLI's line for a problem `line` of the input `source` (named first unless the line names it).
+// The CLI's line for a problem `line` of the input `source` (named first unless the line names it, or
+// is about an option).
 std::string cli_line(const std::string& source, const std::string& line);
 
 // Runs `body`, with the library's bad-input exceptions (CaseError, SolveError) as InputError about

@@ -26,8 +26,9 @@ PYBIND11_MODULE(_impact3d, m) {
         return "<impact3d.Case " + py::repr(py::str(c.spec.name)).cast<std::string>() +
                (c.source.empty() ? std::string() : " from " + c.source) + ">";
       });
-  m.def("read_case_file", &read_case_file, py::arg("path"));
-  m.def("read_case_text", &read_case_text, py::arg("text"), py::arg("source") = "");
+  m.def("read_case_file", &read_case_file, py::arg("path"), py::call_guard<py::gil_scoped_release>());
+  m.def("read_case_text", &read_case_text, py::arg("text"), py::arg("source") = "",
+        py::call_guard<py::gil_scoped_release>());
 
   m.def("solve_json", &solve_json, py::arg("case"), py::arg("strategies"), py::arg("engine"), py::arg("precision"),
         py::arg("units"), py::call_guard<py::gil_scoped_release>());
@@ -36,9 +37,10 @@ PYBIND11_MODULE(_impact3d, m) {
   py::class_<Uncertainty>(m, "Uncertainty")
       .def(py::init<std::string, std::string>(), py::arg("text"), py::arg("source") = "")
       .def_property_readonly("source", [](const Uncertainty& u) { return u.source; });
-  m.def("read_uncertainty_file", [](const std::string& path) {
-    return Uncertainty{guarded(path, [&] { return io::read_text_file(path); }), path};
-  });
+  m.def(
+      "read_uncertainty_file",
+      [](const std::string& path) { return Uncertainty{guarded(path, [&] { return io::read_text_file(path); }), path}; },
+      py::arg("path"), py::call_guard<py::gil_scoped_release>());
   m.def("montecarlo", &montecarlo, py::arg("case"), py::arg("uncertainty"), py::arg("strategies"), py::arg("precision"),
         py::arg("engine"), py::arg("jobs"), py::arg("samples"), py::arg("seed"), py::arg("keep_samples"));
   m.def("sensitivity_json", &sensitivity_json, py::arg("case"), py::arg("strategies"), py::arg("engine"),

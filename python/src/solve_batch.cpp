@@ -1,10 +1,16 @@
 #include "solve_batch.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <optional>
+#include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -12,7 +18,9 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "case.hpp"
 #include "impact3d/io/escape.hpp"
+#include "impact3d/io/limits.hpp"
 #include "impact3d/numeric/batch/columns.hpp"
 #include "impact3d/numeric/lean.hpp"
 
@@ -25,6 +33,9 @@ using Column = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 // A row's status beyond lean.hpp's: its inputs are not a collision (an impact3d.CaseError for a case).
 constexpr std::uint8_t kInvalid = 3;
+// The regime of a row that was not solved: none (REGIMES has no such index).
+constexpr std::uint8_t kNoRegime = 255;
+
 constexpr std::size_t kBlock = 4096;  // rows a thread takes at a time
 
 const char* const kVehicleColumns[] = {"mass", "J00", "J01", "J02", "J10", "J11", "J12", "J20", "J21", "J22", "yaw",
@@ -51,8 +62,14 @@ class Columns {
       if (std::find(names.begin(), names.end(), name) == names.end())
         throw py::type_error(fmt::format("solve_batch: no column {} (the columns are those of "
                                          "impact3d.BATCH_COLUMNS)", io::quoted(name)));
-      Column a = Column::ensure(value);
-      if (!a) throw py::type_error(fmt::format("solve_batch: {} is not numbers", name));
+      // Numbers only: NumPy would also cast strings, complex numbers, dates, None, and a masked array's
+      // hidden values.
+      const py::array raw = py::array::ensure(value);
+      if (!raw || std::string("biuf").find(raw.dtype().kind()) == std::string::npos ||
+          py::isinstance(value, py::module_::import("numpy.ma").attr("MaskedArray")))
+        throw py::type_error(fmt::format("solve_batch: {} is not real numbers (a number, or an array of integers, "
+                                         "floats or booleans)", name));
+      Column a = Column::ensure(raw);
       if (a.ndim() > 1) throw py::value_error(fmt::format("solve_batch: {} has {} dimensions; a column has one", name, a.ndim()));
       if (a.ndim() == 1) {
         if (rows_ && *rows_ != static_cast<std::size_t>(a.shape(0)))
@@ -69,8 +86,11 @@ class Columns {
       const auto it = given_.find(name);
       if (it != given_.end() && it->second.ndim() == 1) {
         data_[name] = it->second.data();
+      } else if (it == given_.end()) {
+        if (zeros_.size() != n) zeros_.assign(n, 0.0);  // one column of zeros for every absent one
+        data_[name] = zeros_.data();
       } else {
-        filled_.emplace_back(n, it == given_.end() ? 0.0 : *it->second.data());
+        filled_.emplace_back(n, *it->second.data());
         data_[name] = filled_.back().data();
       }
     }
@@ -84,39 +104,43 @@ class Columns {
   std::optional<std::size_t> rows_;
   std::map<std::string, Column> given_;
   std::vector<std::vector<double>> filled_;
+  std::vector<double> zeros_;
   std::map<std::string, const double*> data_;
 };
 
-// Why row i is not a collision, as the case reader would say it of a case; nullptr when it is one.
+// Why row i is not a collision, worded as the case reader words it of a case; empty when it is one.
 struct RowCheck {
   const batch::CollisionColumns& in;
+  std::vector<std::pair<std::string, const double*>> named;  // every column read, by name
   const double* lower[2][3];  // J10, J20, J21 of each vehicle, when given (else nullptr)
 
-  const char* operator()(std::size_t i) const {
+  std::string operator()(std::size_t i) const {
+    static const double kMax = std::strtod(io::limits::kMaxMagnitude, nullptr);
+    static const double kMin = std::strtod(io::limits::kMinMagnitude, nullptr);
+    for (const auto& [name, column] : named) {
+      const double x = column[i];
+      if (!std::isfinite(x)) return name + ": not a finite number";
+      if (std::fabs(x) > kMax) return fmt::format("{}: out of range: magnitude {} exceeds {:g}", name, x, kMax);
+      if (x != 0 && std::fabs(x) < kMin)
+        return fmt::format("{}: out of range: {} is not zero but below {:g} in magnitude", name, x, kMin);
+    }
     for (int b = 0; b < 2; ++b) {
       const batch::VehicleColumns& v = in.vehicle[b];
       const double J[6] = {v.J_B[0][i], v.J_B[1][i], v.J_B[2][i], v.J_B[3][i], v.J_B[4][i], v.J_B[5][i]};
-      double all[13 + 6] = {v.mass[i], v.yaw_deg[i], v.pitch_deg[i], v.roll_deg[i]};
-      for (int k = 0; k < 3; ++k) all[4 + k] = v.v_W[k][i], all[7 + k] = v.w_B[k][i], all[10 + k] = v.p_CgIc_B[k][i];
-      for (int k = 0; k < 6; ++k) all[13 + k] = J[k];
-      for (double x : all)
-        if (!std::isfinite(x)) return b == 0 ? "vehicle 1: a value is not finite" : "vehicle 2: a value is not finite";
-      if (!(v.mass[i] > 0)) return b == 0 ? "mass_1: not positive" : "mass_2: not positive";
+      if (!(v.mass[i] > 0)) return fmt::format("mass_{}: not positive", b + 1);
       const double upper[3] = {J[batch::xy], J[batch::xz], J[batch::yz]};
       for (int k = 0; k < 3; ++k)
-        if (lower[b][k] && lower[b][k][i] != upper[k]) return b == 0 ? "J_1: not symmetric" : "J_2: not symmetric";
+        if (lower[b][k] && lower[b][k][i] != upper[k]) return fmt::format("J_{}: not symmetric", b + 1);
       // Sylvester's criterion on the leading minors.
       const double m1 = J[batch::xx], m2 = J[batch::xx] * J[batch::yy] - J[batch::xy] * J[batch::xy];
       const double m3 = J[batch::xx] * (J[batch::yy] * J[batch::zz] - J[batch::yz] * J[batch::yz]) -
                         J[batch::xy] * (J[batch::xy] * J[batch::zz] - J[batch::yz] * J[batch::xz]) +
                         J[batch::xz] * (J[batch::xy] * J[batch::yz] - J[batch::yy] * J[batch::xz]);
-      if (!(m1 > 0 && m2 > 0 && m3 > 0)) return b == 0 ? "J_1: not positive definite" : "J_2: not positive definite";
+      if (!(m1 > 0 && m2 > 0 && m3 > 0)) return fmt::format("J_{}: not positive definite", b + 1);
     }
-    for (const double x : {in.normal_yaw_deg[i], in.normal_pitch_deg[i], in.tangent_roll_deg[i], in.restitution[i], in.mu[i]})
-      if (!std::isfinite(x)) return "contact: a value is not finite";
     if (!(in.restitution[i] >= 0 && in.restitution[i] <= 1)) return "restitution: outside [0, 1]";
     if (!(in.mu[i] >= 0)) return "mu: negative";
-    return nullptr;
+    return {};
   }
 };
 
@@ -132,6 +156,7 @@ py::array_t<double> rows_by_3(std::size_t rows) {
 }  // namespace
 
 py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
+  if (jobs > kMaxJobs) throw py::value_error(fmt::format("solve_batch: jobs at most {}, not {}", kMaxJobs, jobs));
   const Columns c(given);
   const std::size_t n = c.rows();
   batch::CollisionColumns in;
@@ -151,7 +176,11 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
   }
   in.normal_yaw_deg = c["normal_yaw"], in.normal_pitch_deg = c["normal_pitch"], in.tangent_roll_deg = c["tangent_roll"];
   in.restitution = c["restitution"], in.mu = c["mu"];
-  RowCheck check{in, {}};
+  RowCheck check{in, {}, {}};
+  for (int b = 1; b <= 2; ++b)
+    for (const char* name : kVehicleColumns) check.named.emplace_back(fmt::format("{}_{}", name, b), nullptr);
+  for (const char* name : kContactColumns) check.named.emplace_back(name, nullptr);
+  for (auto& [name, column] : check.named) column = c[name];
   for (int b = 0; b < 2; ++b) {
     const char* lower[3] = {"J10", "J20", "J21"};
     for (int k = 0; k < 3; ++k) {
@@ -175,52 +204,67 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
   out.warnings = warnings.mutable_data();
   std::vector<double*> state_data;
   for (auto& s : states) state_data.push_back(s.mutable_data());
-  std::vector<std::pair<std::size_t, const char*>> problems;
+  std::vector<std::pair<std::size_t, std::string>> problems;
 
   {
     py::gil_scoped_release released;
     const unsigned threads = std::max(1u, std::min<unsigned>(jobs ? jobs : std::thread::hardware_concurrency(),
                                                               static_cast<unsigned>((n + kBlock - 1) / kBlock)));
     std::atomic<std::size_t> next{0};
-    std::vector<std::vector<std::pair<std::size_t, const char*>>> found(threads);
+    std::vector<std::vector<std::pair<std::size_t, std::string>>> found(threads);
+    std::vector<std::exception_ptr> failed(threads);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
     const auto work = [&](unsigned t) {
-      for (std::size_t begin; (begin = next.fetch_add(kBlock)) < n;) {
-        const std::size_t end = std::min(n, begin + kBlock);
-        if (velocities) {
-          for (std::size_t i = begin; i < end; ++i) {
-            const LeanSolution<double> r = solve_lean(scene_of(batch::row_of(in, i)), Strategy<double>(PcCrash<double>{in.mu[i]}),
-                                                      Want::velocities);
-            const bool solved = r.status == Status::solved;
-            const double nan = std::numeric_limits<double>::quiet_NaN();
-            const Vec3<double>* vectors[5] = {&r.P_W, &r.v_W[0], &r.w_B[0], &r.v_W[1], &r.w_B[1]};
-            for (int k = 0; k < 3; ++k) {
-              out.P_C[k][i] = solved ? r.impulse.P_C(k) : nan;
-              for (int s = 0; s < 5; ++s) state_data[s][3 * i + k] = solved ? (*vectors[s])(k) : nan;
+      try {
+        for (std::size_t begin; (begin = next.fetch_add(kBlock)) < n;) {
+          const std::size_t end = std::min(n, begin + kBlock);
+          if (velocities) {
+            for (std::size_t i = begin; i < end; ++i) {
+              const LeanSolution<double> r = solve_lean(scene_of(batch::row_of(in, i)),
+                                                        Strategy<double>(PcCrash<double>{in.mu[i]}), Want::velocities);
+              const bool solved = r.status == Status::solved;
+              const Vec3<double>* vectors[5] = {&r.P_W, &r.v_W[0], &r.w_B[0], &r.v_W[1], &r.w_B[1]};
+              for (int k = 0; k < 3; ++k) {
+                out.P_C[k][i] = solved ? r.impulse.P_C(k) : nan;
+                for (int s = 0; s < 5; ++s) state_data[s][3 * i + k] = solved ? (*vectors[s])(k) : nan;
+              }
+              out.status[i] = static_cast<std::uint8_t>(r.status);
+              out.regime[i] = static_cast<std::uint8_t>(r.impulse.regime);
+              out.warnings[i] = r.warnings;
             }
-            out.status[i] = static_cast<std::uint8_t>(r.status);
-            out.regime[i] = static_cast<std::uint8_t>(r.impulse.regime);
-            out.warnings[i] = r.warnings;
+          } else {
+            batch::pc_crash_columns(in, out, begin, end);
           }
-        } else {
-          batch::pc_crash_columns(in, out, begin, end);
+          for (std::size_t i = begin; i < end; ++i) {
+            // A row that is not a collision is flagged, whatever the arithmetic made of it.
+            if (std::string problem = check(i); !problem.empty()) {
+              found[t].emplace_back(i, std::move(problem));
+              for (int k = 0; k < 3; ++k) out.P_C[k][i] = nan;
+              for (auto* s : state_data)
+                for (int k = 0; k < 3; ++k) s[3 * i + k] = nan;
+              out.status[i] = kInvalid;
+              out.warnings[i] = 0;
+            }
+            if (out.status[i] != static_cast<std::uint8_t>(Status::solved)) out.regime[i] = kNoRegime;
+          }
         }
-        // A row that is not a collision is flagged, whatever the arithmetic made of it.
-        for (std::size_t i = begin; i < end; ++i)
-          if (const char* problem = check(i)) {
-            found[t].emplace_back(i, problem);
-            for (int k = 0; k < 3; ++k) out.P_C[k][i] = std::numeric_limits<double>::quiet_NaN();
-            for (auto* s : state_data)
-              for (int k = 0; k < 3; ++k) s[3 * i + k] = std::numeric_limits<double>::quiet_NaN();
-            out.status[i] = kInvalid;
-            out.warnings[i] = 0;
-          }
+      } catch (...) {
+        failed[t] = std::current_exception();
+        next = n;  // the others stop at their next block
       }
     };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
-    work(0);
-    for (auto& th : pool) th.join();
-    for (const auto& f : found) problems.insert(problems.end(), f.begin(), f.end());
+    {
+      std::vector<std::jthread> pool;
+      try {
+        for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
+      } catch (const std::system_error&) {
+        // No more threads to be had: those running and this one share the rows.
+      }
+      work(0);
+    }  // joined
+    for (const auto& e : failed)
+      if (e) std::rethrow_exception(e);
+    for (auto& f : found) std::move(f.begin(), f.end(), std::back_inserter(problems));
     std::sort(problems.begin(), problems.end());
   }
 
@@ -234,7 +278,7 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
     for (int s = 0; s < 5; ++s) result[names[s]] = states[static_cast<std::size_t>(s)];
   }
   py::dict flagged;
-  for (const auto& [row, problem] : problems) flagged[py::int_(row)] = py::str(problem);
+  for (const auto& [row, problem] : problems) flagged[py::int_(row)] = py::str(io::printable(problem));
   result["problems"] = flagged;
   return result;
 }

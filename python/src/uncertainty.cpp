@@ -1,5 +1,8 @@
 #include "uncertainty.hpp"
 
+#include <stdexcept>
+
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 
 #include "impact3d/io/montecarlo.hpp"
@@ -52,13 +55,17 @@ py::dict samples_of(const io::MonteCarloRun& run) {
 py::tuple montecarlo(const Case& c, const Uncertainty& u, const std::vector<std::string>& strategies,
                      const std::string& precision, const std::string& engine, unsigned jobs,
                      std::optional<std::uint64_t> samples, std::optional<std::uint64_t> seed, bool keep) {
+  // The CLI's bounds on --samples and --jobs, in its words.
+  if (samples && (*samples < 1 || *samples > io::kMaxSamples))
+    throw std::invalid_argument(fmt::format("samples: from 1 to {}, not {}", io::kMaxSamples, *samples));
+  if (jobs > kMaxJobs) throw std::invalid_argument(fmt::format("jobs: at most {}, not {}", kMaxJobs, jobs));
   io::MonteCarloOptions o;
   o.precision = precision;
   o.engine = engine_named(engine);
   o.jobs = jobs;
   o.keep_samples = keep;
   if (!strategies.empty())
-    guarded(c.source, [&] {
+    guarded("", [&] {  // an option's problem, as the CLI names it: --strategy[i]
       io::CaseSpec spec = c.spec;
       replace_strategies(spec, strategies);
       o.strategies = spec.strategies;
@@ -73,7 +80,7 @@ py::tuple montecarlo(const Case& c, const Uncertainty& u, const std::vector<std:
       try {
         return io::montecarlo(c.text, spec, o);
       } catch (const io::CaseError& e) {
-        if (samples && e.path == "$.samples") throw io::CaseError("samples", e.what());
+        if (samples && e.path == "$.samples") throw io::CaseError("--samples", e.what());
         throw;
       }
     });

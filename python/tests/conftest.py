@@ -44,6 +44,15 @@ def cli_document(text, precision):
     return doc
 
 
+def cli_error(*args):
+    """The program's one error line after "impact3d: error: ", for a run that must fail on bad input."""
+    r = subprocess.run([CLI, *map(str, args)], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 1 and r.stdout == "", r.stderr
+    prefix = "impact3d: error: "
+    assert r.stderr.startswith(prefix) and r.stderr.count("\n") == 1
+    return r.stderr[len(prefix):-1]
+
+
 @pytest.fixture
 def fig8():
     return SOURCE / "examples" / "fig8_side_impact.json"

@@ -46,11 +46,17 @@ def test_rows_equal_solve(velocities):
         bound = 2 * s["rounding_bound"]
         P = np.array(s["impulse"]["contact"])
         assert np.max(np.abs(r["P_C"][i] - P)) <= bound * np.max(np.abs(P)), i
+        # The lean path's warning codes are solve's but energy_gained, which it does not compute.
+        assert (r["warnings"][i] == 0) == (not [w for w in s["warnings"] if "energy gained" not in w]), i
         if velocities:
-            # v after = v + P_W / m: the impulses' difference over the mass, and the sum's rounding.
+            PW = np.array(s["impulse"]["world"])
+            assert np.max(np.abs(r["P_W"][i] - PW)) <= bound * np.max(np.abs(P))
+            # v after = v + P_W / m, w after = w + J^-1 (r x R^T P_W): the impulses' difference carried
+            # through, and the sum's rounding.
             for k, name in ((0, "_1"), (1, "_2")):
-                v = np.array(s["vehicles"][k]["velocity"])
-                assert np.max(np.abs(r["v" + name][i] - v)) <= bound * np.max(np.abs(v)) + bound * np.max(np.abs(P)) / d[f"mass{name}"][i]
+                v, w = np.array(s["vehicles"][k]["velocity"]), np.array(s["vehicles"][k]["angular_velocity"])
+                assert np.max(np.abs(r["v" + name][i] - v)) <= bound * (np.max(np.abs(v)) + np.max(np.abs(P)) / d[f"mass{name}"][i])
+                assert np.max(np.abs(r["w" + name][i] - w)) <= bound * (np.max(np.abs(w)) + np.max(np.abs(r["w" + name][i] - [d[f"w{p}{name}"][i] for p in range(3)])))
         regimes.add(s["regime"])
         checked += 1
     assert checked == n == 300
@@ -68,12 +74,13 @@ def test_bad_rows_are_flagged_not_dropped():
     d["mu"] = 0.5  # a number for every row
     r = impact3d.solve_batch(**d)
     assert len(r["status"]) == 40
-    assert r["problems"] == {3: "mass_1: not positive", 7: "vehicle 2: a value is not finite",
+    assert r["problems"] == {3: "mass_1: not positive", 7: "J11_2: not a finite number",
                              11: "J_1: not positive definite", 13: "restitution: outside [0, 1]",
                              17: "J_2: not symmetric"}
     for i in range(40):
         if i in r["problems"]:
             assert impact3d.STATUSES[r["status"][i]] == "invalid" and np.isnan(r["P_C"][i]).all()
+            assert r["regime"][i] == 255
         else:
             assert impact3d.STATUSES[r["status"][i]] == "solved" and np.isfinite(r["P_C"][i]).all()
     # The case reader refuses them too (a NaN has no JSON).
@@ -101,3 +108,29 @@ def test_the_same_at_any_number_of_threads():
     d = peer.random_collisions(20000, 4)
     one, two = impact3d.solve_batch(jobs=1, **d), impact3d.solve_batch(jobs=2, **d)
     assert np.array_equal(one["P_C"], two["P_C"], equal_nan=True) and np.array_equal(one["status"], two["status"])
+
+
+def test_values_the_case_reader_refuses_are_invalid_rows():
+    d = peer.random_collisions(6, 12)
+    d["mass_1"][0] = 1e300
+    d["yaw_2"][1] = 1e13
+    d["r2_1"][2] = 1e-300
+    d["v0_2"][3] = np.inf
+    r = impact3d.solve_batch(**d)
+    assert r["problems"][0].startswith("mass_1: out of range: magnitude")
+    assert r["problems"][1].startswith("yaw_2: out of range: magnitude")
+    assert r["problems"][2].startswith("r2_1: out of range:") and "not zero but below" in r["problems"][2]
+    assert r["problems"][3] == "v0_2: not a finite number"
+    assert sorted(r["problems"]) == [0, 1, 2, 3]
+
+
+def test_columns_that_are_not_real_numbers_are_refused():
+    d = peer.random_collisions(5, 13)
+    for bad in (np.full(5, "0.5"), np.full(5, 0.5 + 0j), None, np.ma.masked_array(np.full(5, 0.5), mask=[1, 0, 0, 0, 0]),
+                np.full(5, np.datetime64("2020-01-01"))):
+        with pytest.raises(TypeError, match="mu is not real numbers"):
+            impact3d.solve_batch(**{**d, "mu": bad})
+    ints = impact3d.solve_batch(**{**d, "mass_1": d["mass_1"].round().astype(np.int64)})
+    assert (np.array(ints["status"]) == 0).all()
+    with pytest.raises(ValueError, match="jobs at most 1024"):
+        impact3d.solve_batch(jobs=1025, **d)

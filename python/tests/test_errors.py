@@ -48,3 +48,25 @@ def test_bad_options(fig8):
         impact3d.solve(fig8, strategies="pc-crash:mu=-1")
     with pytest.raises(TypeError):
         impact3d.read_case(42)
+
+
+def test_a_dict_with_no_json_form_is_named_by_its_path(fig8):
+    import json
+    case = json.loads(fig8.read_text())
+    case["vehicles"][0]["mass"] = float("nan")
+    with pytest.raises(impact3d.CaseError, match=r"^\$\.vehicles\[0\]\.mass: not a finite number"):
+        impact3d.read_case(case)
+    case["vehicles"][0]["mass"] = object()
+    with pytest.raises(impact3d.CaseError, match=r"^\$\.vehicles\[0\]\.mass: object has no JSON form"):
+        impact3d.read_case(case)
+
+
+def test_decimals_and_numpy_numbers_in_a_dict_keep_their_value(fig8):
+    import json
+    from decimal import Decimal
+    import numpy as np
+    case = json.loads(fig8.read_text())
+    case["restitution"] = Decimal("0.1")           # the file's literal, digit for digit
+    case["vehicles"][0]["mass"] = np.int64(1560)
+    case["vehicles"][1]["mass"] = np.float64(2600.0)
+    assert impact3d.solve(case, precision="100") == impact3d.solve(fig8, precision="100")

@@ -3,17 +3,21 @@ kept samples against the summary they were summarized into."""
 import numpy as np
 
 import impact3d
-from conftest import SOURCE, cli, cli_document
+import json
+
+import pytest
+
+from conftest import SOURCE, cli, cli_error
 
 UNCERTAINTY = SOURCE / "examples" / "uncertainty" / "fig8_side_impact.json"
 
 
 def test_montecarlo_equals_the_cli(fig8):
     ours = impact3d.montecarlo(fig8, UNCERTAINTY, samples=2000, seed=3, jobs=2)
-    theirs = cli_document(cli("montecarlo", fig8, "--uncertainty", UNCERTAINTY, "--samples", 2000, "--seed", 3,
-                              "--format", "json"), "double")
+    theirs = json.loads(cli("montecarlo", fig8, "--uncertainty", UNCERTAINTY, "--samples", 2000, "--seed", 3,
+                            "--format", "json"))
     assert ours == theirs
-    assert ours["samples"] == 2000
+    assert ours["samples"] == 2000 and type(ours["samples"]) is int and type(ours["seed"]) is int
 
 
 def test_kept_samples_are_what_was_summarized(fig8):
@@ -33,10 +37,20 @@ def test_kept_samples_are_what_was_summarized(fig8):
 
 
 def test_sensitivity_equals_the_cli(fig8):
-    assert impact3d.sensitivity(fig8) == cli_document(cli("sensitivity", fig8, "--format", "json"), "double")
+    assert impact3d.sensitivity(fig8) == json.loads(cli("sensitivity", fig8, "--format", "json"))
 
 
 def test_an_uncertainty_dict_is_named_by_its_path(fig8):
-    import pytest
     with pytest.raises(impact3d.CaseError, match=r"^\$\.inputs"):
         impact3d.montecarlo(fig8, {"samples": 10, "inputs": [{"path": "$.nowhere", "distribution": "normal", "mean": 1, "sd": 1}]})
+
+
+def test_montecarlo_errors_are_the_clis(fig8):
+    with pytest.raises(impact3d.CaseError) as raised:
+        impact3d.montecarlo(fig8, UNCERTAINTY, strategies="pc-crash:mu=-1", samples=10)
+    assert str(raised.value) == cli_error("montecarlo", fig8, "--uncertainty", UNCERTAINTY, "--strategy", "pc-crash:mu=-1",
+                                          "--samples", 10)
+    # The CLI refuses these as usage errors (exit 2); Python as ValueError, before any work.
+    for bad in ({"samples": 0}, {"samples": 10**7 + 1}, {"samples": 2**62}, {"jobs": 1025}):
+        with pytest.raises(ValueError, match="^(samples|jobs): "):
+            impact3d.montecarlo(fig8, UNCERTAINTY, **bad)

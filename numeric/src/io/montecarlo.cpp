@@ -407,11 +407,12 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   const std::vector<StrategySpec>& strategies = o.strategies.empty() ? variants.base().strategies : o.strategies;
   const std::size_t results = strategies.size(), outputs = monte_carlo_outputs().size();
   const std::uint64_t n = u.samples;
-  const std::uint64_t kept = n * (results * outputs + (o.keep_samples ? u.inputs.size() : 0));
-  if (kept > kMaxKeptValues)
-    throw CaseError("$.samples", fmt::format("{} samples of {} results keep {} values, more than a run keeps ({}): take "
+  const std::uint64_t per_sample = results * outputs + (o.keep_samples ? u.inputs.size() : 0);
+  // Compared by division: n * per_sample may wrap for a caller that does not bound n (the readers do).
+  if (per_sample > 0 && n > kMaxKeptValues / per_sample)
+    throw CaseError("$.samples", fmt::format("{} samples of {} results keep more than the {} values a run keeps: take "
                                              "fewer samples or strategies",
-                                             n, results, kept, kMaxKeptValues));
+                                             n, results, kMaxKeptValues));
   std::vector<double> store(results * outputs * n, kNaN);
   if (o.keep_samples) {
     run.inputs_of.assign(n * u.inputs.size(), 0.0);
