@@ -4,8 +4,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -55,28 +57,19 @@ std::optional<std::pair<std::size_t, std::string>> in_result(const std::string& 
                    path.substr(close + 1)};
 }
 
-// A JSON path of the dotted kind as a JSON pointer into the certified document.
-const json* at_path(const json& doc, const std::string& path) {
-  const json* node = &doc;
-  std::size_t i = 0;
-  while (i < path.size()) {
-    if (path[i] == '.') ++i;
-    if (path[i] == '[') {
-      const std::size_t close = path.find(']', i);
-      const std::size_t index = std::stoul(path.substr(i + 1, close - i - 1));
-      if (!node->is_array() || index >= node->size()) return nullptr;
-      node = &(*node)[index];
-      i = close + 1;
-    } else {
-      const std::size_t end = std::min(path.find('.', i), path.find('[', i));
-      const std::string key = path.substr(i, end == std::string::npos ? std::string::npos : end - i);
-      const auto it = node->find(key);
-      if (!node->is_object() || it == node->end()) return nullptr;
-      node = &*it;
-      i = end == std::string::npos ? path.size() : end;
-    }
+// Each scalar that is not a number under `node`, with its path spelled as number_literals spells it;
+// objects' members named in `skip` are left out, at any depth.
+template <typename F>
+void for_each_other(const json& node, const std::string& path, std::initializer_list<std::string_view> skip, F&& f) {
+  if (node.is_object()) {
+    for (const auto& [key, value] : node.items())
+      if (std::find(skip.begin(), skip.end(), key) == skip.end())
+        for_each_other(value, path.empty() ? key : path + "." + key, skip, f);
+  } else if (node.is_array()) {
+    for (std::size_t i = 0; i < node.size(); ++i) for_each_other(node[i], fmt::format("{}[{}]", path, i), skip, f);
+  } else if (!node.is_number()) {
+    f(path, node);
   }
-  return node;
 }
 
 // A field of the reference: a number's literal, or another value (a string, a boolean, a null).
@@ -98,6 +91,7 @@ class Prover {
  public:
   Prover(const std::string& certified, int digits) : cert_(json::parse(certified)), digits_(digits) {
     for (const auto& [path, bounds] : cert_.at("enclosures").items()) enclosures_.emplace(path, bounds);
+    for_each_other(cert_, "", {"enclosures"}, [&](const std::string& path, const json& v) { others_.emplace(path, &v); });
   }
 
   // The paths of the numbers that are rounding noise (to be written 0); failure() empty when the rest
@@ -115,7 +109,8 @@ class Prover {
       largest = std::max(largest, std::fabs(std::strtod(f.literal.c_str(), nullptr)));
       scopes[scope(n.path)].push_back(std::move(f));
     }
-    others(doc, "", scopes);
+    for_each_other(doc, "", {"certified", "decisions", "warnings", "precision", "engine"},
+                   [&](const std::string& path, const json& v) { scopes[scope(path)].push_back(Field{path, {}, &v}); });
     // The 100-digit solve's rounding noise: far below what its 100 digits resolve of the document's
     // largest number, and far above the noise itself (10^-98 of it at most).
     noise_bound_ = kNoiseFraction * largest;
@@ -194,6 +189,7 @@ class Prover {
   json cert_;
   int digits_;
   std::map<std::string, json> enclosures_;
+  std::map<std::string, const json*> others_;  // the certified document's strings, booleans and nulls
   std::string failure_;
   std::size_t proven_ = 0, other_branch_ = 0;
   double widest_ = 0, zero_reach_ = 0, noise_bound_ = 0;
@@ -207,26 +203,14 @@ class Prover {
     return r ? static_cast<long>(r->first) : -1;
   }
 
-  // Strings, booleans and nulls, by scope.
-  void others(const json& node, const std::string& path, std::map<long, std::vector<Field>>& scopes) const {
-    if (node.is_object()) {
-      for (const auto& [key, value] : node.items())
-        if (key != "certified" && key != "decisions" && key != "warnings" && key != "precision" && key != "engine")
-          others(value, path.empty() ? key : path + "." + key, scopes);
-    } else if (node.is_array()) {
-      for (std::size_t i = 0; i < node.size(); ++i) others(node[i], fmt::format("{}[{}]", path, i), scopes);
-    } else if (!node.is_number()) {
-      scopes[scope(path)].push_back(Field{path, {}, &node});
-    }
-  }
-
   // Every field of one scope against the branch at `branch` (the scope's own path, or an alternative's).
   BranchCheck on_branch(const std::vector<Field>& fields, const std::string& own, const std::string& branch) const {
     BranchCheck c;
     for (const auto& f : fields) {
       const std::string there = branch + f.path.substr(own.size());
       if (f.value) {
-        const json* v = at_path(cert_, there);
+        const auto it = others_.find(there);
+        const json* v = it == others_.end() ? nullptr : it->second;
         if (!v || *v != *f.value) {
           c.failure = fmt::format("{}: {} where the certified result has {}", f.path, io::printable(f.value->dump()),
                                   v ? io::printable(v->dump()) : std::string("nothing"));
