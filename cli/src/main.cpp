@@ -16,6 +16,7 @@
 #include "montecarlo.hpp"
 #include "plot.hpp"
 #include "report.hpp"
+#include "reconstruct.hpp"
 #include "sensitivity.hpp"
 #include "user_error.hpp"
 
@@ -169,6 +170,19 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"generated", "direct"}));
   sens_cmd->add_option("--plot", sopt.plot_dir, "also draw a tornado figure of each vehicle's delta-V into this directory");
   sens_cmd->add_flag("--png", sopt.png, "figures as PNG instead of SVG");
+  auto* rec_cmd = app.add_subcommand(
+      "reconstruct", "pre-impact speeds and other unknowns from post-impact evidence, by weighted least squares (many-cases.md)");
+  impact3d::cli::ReconstructCliOptions recopt;
+  std::string rec_engine = "generated";
+  rec_cmd->add_option("case", recopt.case_path, "case file (JSON): every input but the unknowns, and one strategy")->required();
+  rec_cmd->add_option("--evidence", recopt.evidence_path, "evidence file: the unknowns and the evidence (README, \"Reconstruction\")")
+      ->required();
+  rec_cmd->add_option("--format", recopt.format, "text report (default) or contract JSON")->check(CLI::IsMember({"text", "json"}));
+  rec_cmd->add_option("--strategy", recopt.strategy, "the strategy fitted, replacing the case's (as solve's --strategy)");
+  rec_cmd->add_option("--engine", rec_engine, "generated (default) or direct, as solve's")
+      ->check(CLI::IsMember({"generated", "direct"}));
+  rec_cmd->add_option("--plot", recopt.plot_dir, "also draw the plan view and the chi2 surface into this directory (gnuplot)");
+  rec_cmd->add_flag("--png", recopt.png, "figures as PNG instead of SVG");
   auto* compare_cmd = app.add_subcommand("compare", "compare another tool's results with reference results");
   std::string reference, other;
   impact3d::verification::CompareOptions copt;
@@ -264,6 +278,11 @@ int main(int argc, char** argv) {
     return guarded(sopt.case_path, [&] {
       sopt.engine = sens_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
       return impact3d::cli::sensitivity(sopt);
+    });
+  if (rec_cmd->parsed())
+    return guarded("", [&] {
+      recopt.engine = rec_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
+      return impact3d::cli::reconstruct(recopt);
     });
   if (verify_cmd->parsed()) {
     // Nothing to compare is not a pass.

@@ -18,16 +18,6 @@
 
 namespace impact3d::cli {
 
-namespace {
-
-// A problem of one input file, named by it ("U.json: $.inputs[2].path: ...").
-io::CaseError in_file(const std::string& file, const io::CaseError& e) {
-  if (e.path.rfind("--", 0) == 0 || e.path.rfind(file + ":", 0) == 0) return e;
-  return io::CaseError(file + ": " + e.path, e.what());
-}
-
-}  // namespace
-
 int montecarlo(const MonteCarloCliOptions& o) {
   io::MonteCarloOptions mo;
   mo.precision = o.precision;

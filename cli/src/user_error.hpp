@@ -3,11 +3,20 @@
 #pragma once
 
 #include <stdexcept>
+#include <string>
+
+#include "impact3d/io/case_spec.hpp"
 
 namespace impact3d::cli {
 
 struct UserError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+
+// A problem of one input file, named by it ("U.json: $.inputs[2].path: ..."); an option's stays its own.
+inline io::CaseError in_file(const std::string& file, const io::CaseError& e) {
+  if (e.path.rfind("--", 0) == 0 || e.path.rfind(file + ":", 0) == 0) return e;
+  return io::CaseError(file + ": " + e.path, e.what());
+}
 
 }  // namespace impact3d::cli

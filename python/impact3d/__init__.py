@@ -9,6 +9,8 @@ Python.
 - solve_batch: pc-crash on many collisions held as NumPy columns, on every core, the GIL released.
 - montecarlo, sensitivity: many-cases.md's documents, as `impact3d montecarlo` and `impact3d
   sensitivity` print them; montecarlo can also hand every sample over as arrays.
+- reconstruct: pre-impact speeds and other unknowns from post-impact evidence, as `impact3d
+  reconstruct` prints them.
 
 Units are the case's (SI: m, kg, kg m^2, m/s, rad/s, N s, J; US: ft, lb, slug ft^2, mph, deg/s, lbf s,
 ft lbf) unless `units` asks for others; angles are in degrees. Bad input raises CaseError (a
@@ -21,7 +23,7 @@ from . import _impact3d
 from ._impact3d import (BATCH_COLUMNS, BATCH_SIMD, PRECISIONS, REGIMES, STATUSES, WARNINGS, Case,
                         CaseError)
 
-__all__ = ["read_case", "solve", "solve_batch", "montecarlo", "sensitivity", "Case", "CaseError",
+__all__ = ["read_case", "solve", "solve_batch", "montecarlo", "sensitivity", "reconstruct", "Case", "CaseError",
            "PRECISIONS", "REGIMES", "STATUSES", "WARNINGS", "BATCH_COLUMNS", "BATCH_SIMD"]
 
 
@@ -142,3 +144,26 @@ def sensitivity(case, strategies=None, engine="generated"):
     (many-cases.md). Derivatives are in the case's units (output unit per input unit)."""
     c = read_case(case)
     return _convert.summary(_impact3d.sensitivity_json(c, _strategies(strategies), engine))
+
+
+def reconstruct(case, evidence, strategy=None, engine="generated"):
+    """Solves for the unknowns `evidence` names (a path to, or a dict of, many-cases.md's E.json: each
+    vehicle's pre-impact speed, its heading, or any numeric input of the case) from what is known after
+    the impact, by weighted least squares on the forward model of the case's one strategy (or
+    `strategy`, as --strategy takes it), as `impact3d reconstruct --format json` prints it: the estimates
+    with their standard errors and correlation, each evidence component's residual, chi2, its degrees
+    of freedom and p-value, the regime at the fit, identifiability and the other admissible fits.
+    Values are in the case's units; an unknown the evidence cannot determine has value and sd None.
+
+    Raises CaseError with the command line's messages."""
+    c = read_case(case)
+    if isinstance(evidence, dict):
+        text, source = _json_text(evidence, "evidence"), ""
+    elif isinstance(evidence, (str, os.PathLike)):
+        source = os.fspath(evidence)
+        text = _impact3d.read_input_file(source)
+    else:
+        raise TypeError(f"evidence: a path or a dict, not {type(evidence).__name__}")
+    if strategy is not None and not isinstance(strategy, str):
+        strategy = _json_text(strategy, "strategy")
+    return _convert.summary(_impact3d.reconstruct_json(c, text, source, strategy or "", engine))

@@ -8,6 +8,7 @@
 #include "impact3d/numeric/lean.hpp"
 #include "solve.hpp"
 #include "solve_batch.hpp"
+#include "reconstruct.hpp"
 #include "uncertainty.hpp"
 
 namespace py = pybind11;
@@ -45,6 +46,11 @@ PYBIND11_MODULE(_impact3d, m) {
         py::arg("engine"), py::arg("jobs"), py::arg("samples"), py::arg("seed"), py::arg("keep_samples"));
   m.def("sensitivity_json", &sensitivity_json, py::arg("case"), py::arg("strategies"), py::arg("engine"),
         py::call_guard<py::gil_scoped_release>());
+  m.def(
+      "read_input_file", [](const std::string& path) { return guarded(path, [&] { return io::read_text_file(path); }); },
+      py::arg("path"), py::call_guard<py::gil_scoped_release>());
+  m.def("reconstruct_json", &reconstruct_json, py::arg("case"), py::arg("evidence_text"), py::arg("evidence_source"),
+        py::arg("strategy"), py::arg("engine"), py::call_guard<py::gil_scoped_release>());
 
   py::list precisions;
   for (const auto& p : io::precision_names()) precisions.append(p);

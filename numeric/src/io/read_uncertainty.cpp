@@ -8,6 +8,7 @@
 
 #include "impact3d/io/case_spec.hpp"
 #include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_fields.hpp"
 #include "impact3d/io/json_tree.hpp"
 #include "impact3d/io/limits.hpp"
 
@@ -18,61 +19,13 @@ using Type = JsonValue::Type;
 using uncertainty::Distribution;
 using Kind = Distribution::Kind;
 
-[[noreturn]] void fail(const std::string& at, const std::string& problem) { throw CaseError(at, problem); }
-
-std::string member(const std::string& at, std::string_view key) { return at + "." + std::string(key); }
-
-void only_keys(const JsonValue& v, const std::string& at, std::initializer_list<std::string_view> allowed) {
-  for (const std::string& k : v.keys) {
-    if (!k.empty() && k[0] == '_') continue;  // comments and private extensions, as in a case file
-    bool known = false;
-    for (std::string_view a : allowed) known = known || k == a;
-    if (!known) fail(at, fmt::format("unknown key {} (keys starting with '_' are ignored)", io::quoted(k)));
-  }
-}
-
-const JsonValue& need(const JsonValue& v, const std::string& at, std::string_view key, Type type, const char* what) {
-  const JsonValue* m = v.find(key);
-  if (!m) fail(at, fmt::format("missing \"{}\"", key));
-  if (!m->is(type)) fail(member(at, key), fmt::format("must be {}", what));
-  return *m;
-}
-
-// A count written as a plain non-negative integer literal, at most `most`.
-std::uint64_t count(const JsonValue& v, const std::string& at, std::uint64_t least, std::uint64_t most) {
-  if (!v.is(Type::number)) fail(at, "must be a whole number");
-  const std::string& t = v.text;
-  if (t.empty() || t.size() > 20 || t.find_first_not_of("0123456789") != std::string::npos)
-    fail(at, fmt::format("must be a whole number written in digits (got {})", printable(t)));
-  std::uint64_t n = 0;
-  for (const char c : t) {
-    const std::uint64_t digit = static_cast<std::uint64_t>(c - '0');
-    if (n > (UINT64_MAX - digit) / 10) fail(at, fmt::format("must be at most {}", most));
-    n = n * 10 + digit;
-  }
-  if (n < least || n > most) fail(at, fmt::format("must be from {} to {} (got {})", least, most, t));
-  return n;
-}
-
-// The case numbers' largest magnitude (limits.hpp), which every parameter and value keeps to.
-const double kMaxMagnitude = std::strtod(limits::kMaxMagnitude, nullptr);
-
-bool within_magnitude(const JsonValue& x) {
-  return x.is(Type::number) && std::isfinite(x.number) && std::fabs(x.number) <= kMaxMagnitude;
-}
-
-double parameter(const JsonValue& v, const std::string& at, std::string_view key) {
-  const JsonValue& m = need(v, at, key, Type::number, "a number");
-  if (!within_magnitude(m))
-    fail(member(at, key), fmt::format("must be a finite number of magnitude at most {} (got {})", limits::kMaxMagnitude, printable(m.text)));
-  return m.number;
-}
-
-double positive(const JsonValue& v, const std::string& at, std::string_view key) {
-  const double x = parameter(v, at, key);
-  if (!(x > 0)) fail(member(at, key), fmt::format("must be > 0 (got {})", printable(v.find(key)->text)));
-  return x;
-}
+using fields::fail;
+using fields::member;
+using fields::need;
+using fields::only_keys;
+using fields::parameter;
+using fields::positive;
+using fields::within_magnitude;
 
 Distribution distribution(const JsonValue& v, const std::string& at) {
   const JsonValue& name = need(v, at, "distribution", Type::string, "a string");
@@ -150,8 +103,8 @@ UncertaintySpec read_uncertainty(const std::string& json_text) {
   if (!root.is(Type::object)) fail("$", "must be an object");
   only_keys(root, "$", {"samples", "seed", "inputs", "correlations"});
   UncertaintySpec spec;
-  if (const JsonValue* s = root.find("samples")) spec.samples = count(*s, "$.samples", 1, kMaxSamples);
-  if (const JsonValue* s = root.find("seed")) spec.seed = count(*s, "$.seed", 0, UINT64_MAX);
+  if (const JsonValue* s = root.find("samples")) spec.samples = fields::count(*s, "$.samples", 1, kMaxSamples);
+  if (const JsonValue* s = root.find("seed")) spec.seed = fields::count(*s, "$.seed", 0, UINT64_MAX);
   const JsonValue& inputs = need(root, "$", "inputs", Type::array, "an array of inputs");
   if (inputs.size() == 0 || inputs.size() > kMaxUncertainInputs) fail("$.inputs", fmt::format("must hold 1 to {} inputs", kMaxUncertainInputs));
   for (std::size_t i = 0; i < inputs.size(); ++i) {

@@ -25,14 +25,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-class SeedScope {
- public:
-  explicit SeedScope(const DualSeeds& s) { dual_seeds = &s; }
-  ~SeedScope() { dual_seeds = nullptr; }
-  SeedScope(const SeedScope&) = delete;
-  SeedScope& operator=(const SeedScope&) = delete;
-};
-
 // The deciding quantity of a strategy's regime, limit - mu, with its name; none for brach.
 std::optional<std::pair<std::string, Dual>> margin(const Strategy<Dual>& st, const ImpulseSolution<Dual>& imp) {
   if (const auto* pc = std::get_if<PcCrash<Dual>>(&st))
@@ -91,7 +83,7 @@ SensitivityRun sensitivity(CaseSpec spec, const SensitivityOptions& o) {
     Scene<Dual> scene;
     std::vector<Strategy<Dual>> strategies;
     {
-      const SeedScope scope(seeds);
+      const DualSeedScope scope(seeds);
       scene = to_scene<Dual>(spec);
       strategies = to_strategies<Dual>(spec);
     }

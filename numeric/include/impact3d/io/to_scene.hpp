@@ -27,6 +27,15 @@ struct DualSeeds {
 };
 inline thread_local const DualSeeds* dual_seeds = nullptr;
 
+// Installs `seeds` on this thread for its lifetime.
+class DualSeedScope {
+ public:
+  explicit DualSeedScope(const DualSeeds& s) { dual_seeds = &s; }
+  ~DualSeedScope() { dual_seeds = nullptr; }
+  DualSeedScope(const DualSeedScope&) = delete;
+  DualSeedScope& operator=(const DualSeedScope&) = delete;
+};
+
 template <typename Scalar>
 Scalar to_scalar(const Number& n) {
   if constexpr (is_dual_v<Scalar>) {

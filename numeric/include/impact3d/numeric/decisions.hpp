@@ -87,6 +87,36 @@ class DecisionRecording {
   DecisionLog* previous_;
 };
 
+// A branch imposed on a named decision, for every scalar type, while an ImposeBranch lives on the
+// thread: a reconstruction fits each regime's model on its own, then checks that the regime it imposed
+// is the one the fitted inputs decide (io/reconstruct.hpp). Names compare by address: each is one
+// inline array.
+struct ImposedBranch {
+  const char* name = nullptr;
+  bool value = false;
+  static inline thread_local const ImposedBranch* current = nullptr;
+};
+
+// `decided`, unless a branch is imposed on `name`.
+inline bool imposed_or(const char* name, bool decided) {
+  const ImposedBranch* b = ImposedBranch::current;
+  return b && b->name == name ? b->value : decided;
+}
+
+class ImposeBranch {
+ public:
+  ImposeBranch(const char* name, bool value) : branch_{name, value}, previous_(ImposedBranch::current) {
+    ImposedBranch::current = &branch_;
+  }
+  ~ImposeBranch() { ImposedBranch::current = previous_; }
+  ImposeBranch(const ImposeBranch&) = delete;
+  ImposeBranch& operator=(const ImposeBranch&) = delete;
+
+ private:
+  ImposedBranch branch_;
+  const ImposedBranch* previous_;
+};
+
 // The name of the comparisons made while it lives, for the scalar types that record them.
 template <typename Scalar, typename = void>
 struct DecisionName {

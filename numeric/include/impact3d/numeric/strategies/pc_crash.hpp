@@ -30,7 +30,7 @@ Singular pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec, Impulse
   bool full;
   {
     const DecisionName<Scalar> name(decision_names::pc_crash_regime);
-    full = spec.mu >= gir;
+    full = imposed_or(decision_names::pc_crash_regime, spec.mu >= gir);
   }
   if (full) {
     out.regime = Regime::full;

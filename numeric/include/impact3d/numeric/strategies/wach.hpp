@@ -24,8 +24,9 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
   flag_if_undecided(out, p, spec.mu, limit, spec.limit == WachLimit::cir ? "CIR (eq 19)" : "GIR (eq 20)");
   bool capped;
   {
-    const DecisionName<Scalar> name(spec.limit == WachLimit::cir ? decision_names::wach_cap_cir : decision_names::wach_cap_gir);
-    capped = spec.mu >= limit;
+    const char* decision = spec.limit == WachLimit::cir ? decision_names::wach_cap_cir : decision_names::wach_cap_gir;
+    const DecisionName<Scalar> name(decision);
+    capped = imposed_or(decision, spec.mu >= limit);
   }
   out.regime = capped ? Regime::capped : Regime::sliding;
   out.mu = capped ? limit : spec.mu;
