@@ -190,7 +190,7 @@ TEST_CASE("bad evidence files and options: one line naming the file and the fiel
       {"{" + speeds + R"(, "evidence": [{"speed": 0, "output": "energy.loss", "value": 1, "sd": 1}]})",
        "$.evidence[0]: must name exactly one of \"output\""},
       {R"({"unknowns": [{"speed": 1, "start": -20}], )" + velocity + "}",
-       "$.unknowns: the case has no solution at the unknowns' starting values ($.vehicles: not approaching"},
+       "$.unknowns: the case has no solution at the unknowns' starting values (speed[1] = -20): $.vehicles: not approaching"},
   };
   int checked = 0;
   for (std::size_t i = 0; i < bad.size(); ++i) {

@@ -33,11 +33,11 @@ int reconstruct(const ReconstructCliOptions& o) {
   io::Reconstruction r;
   try {
     r = io::reconstruct(case_text, evidence, ro);
+    if (!o.plot_dir.empty()) (void)reconstruct_figures({case_text, evidence, ro, r}, OutputDir(o.plot_dir), o.png);
   } catch (const io::CaseError& e) {
     const bool evidence_field = e.path.rfind("$.unknowns", 0) == 0 || e.path.rfind("$.evidence", 0) == 0;
     throw in_file(evidence_field ? o.evidence_path : o.case_path, e);
   }
-  if (!o.plot_dir.empty()) (void)reconstruct_figures({case_text, evidence, ro, r}, OutputDir(o.plot_dir), o.png);
   const std::string out = o.format == "json" ? io::reconstruction_json(r) : io::reconstruction_text(r);
   std::fwrite(out.data(), 1, out.size(), stdout);
   return 0;

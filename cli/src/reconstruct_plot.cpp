@@ -112,8 +112,14 @@ std::string chi2_surface(const ReconstructFigures& f, const OutputDir& dir, bool
   std::string script = gnuplot_terminal(png, 800, 700);
   script += fmt::format(
       "set title {} noenhanced\nset xlabel {} noenhanced\nset ylabel {} noenhanced\nset cblabel 'chi2'\n",
-      gnuplot_string(fmt::format("chi2 over {} and {} (others at the fit); contours: joint 68.3, 95.4, 99.73 %",
-                                 unknowns[0].label(), unknowns[1].label())),
+      // With more unknowns the surface is a slice through the fit: its regions are conditional on the
+      // others, narrower than the joint ones of the two.
+      gnuplot_string(unknowns.size() == 2
+                         ? fmt::format("chi2 over {} and {}; contours: their joint 68.3, 95.4, 99.73 % regions", unknowns[0].label(),
+                                       unknowns[1].label())
+                         : fmt::format("chi2 over {} and {}, the others at the fit; contours: 68.3, 95.4, 99.73 % regions "
+                                       "conditional on the others",
+                                       unknowns[0].label(), unknowns[1].label())),
       gnuplot_string(unknowns[0].label()), gnuplot_string(unknowns[1].label()));
   script += fmt::format(
       "set view map\nset pm3d at b\nset palette rgbformulae 33,13,10\nset contour base\nset autoscale fix\n"

@@ -1,7 +1,8 @@
 // The figures of `impact3d reconstruct --plot DIR`: rec_plan, a plan view of each vehicle's CG relative
 // to the impulse centre with its reconstructed velocity before and after the impact and the evidence of
-// its post-impact velocity (1-sd ellipses); rec_chi2, chi2 over the first two unknowns with the joint
-// confidence contours, when both are determined. Every number comes from the fit; no user text reaches
+// its post-impact velocity (1-sd ellipses); rec_chi2, chi2 over the first two unknowns with the
+// confidence contours (joint with two unknowns, conditional on the others with more), when both are
+// determined. Every number comes from the fit; no user text reaches
 // gnuplot but as quoted data.
 #pragma once
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include <Eigen/Dense>
@@ -34,23 +35,34 @@ struct LeastSquares : Eigen::DenseFunctor<double> {
   int operator()(const Vector& x, Vector& fvec) {
     const Eval& e = at(x);
     fvec.setZero(values());
-    if (!e.ok) fvec.setConstant(kInfeasible);
-    else fvec.head(e.r.size()) = e.r;
+    if (!e.ok) {
+      fvec.setConstant(kInfeasible);
+      ++infeasible_, problem_ = e.problem;
+    } else {
+      fvec.head(e.r.size()) = e.r;
+    }
     return 0;
   }
   int df(const Vector& x, Matrix& fjac) {
     const Eval& e = at(x);
-    if (!e.ok) return -1;  // not reached: the Jacobian is asked at accepted points only
+    // The Jacobian is asked at accepted points, and every start is one the model solves; a failure
+    // here would stop the minimizer (UserAsked: not converged).
+    if (!e.ok) return -1;
     fjac.setZero(values(), inputs());
     fjac.topRows(e.J.rows()) = e.J;
     return 0;
   }
+  // Trial points the case refused, and the last one's problem.
+  int infeasible() const { return infeasible_; }
+  const std::string& problem() const { return problem_; }
 
  private:
   Model& model_;
   const ImposedBranch* imposed_;
   Vector last_x_;
   Eval last_;
+  int infeasible_ = 0;
+  std::string problem_;
   const Eval& at(const Vector& x) {
     if (last_x_.size() != x.size() || last_x_ != x) last_ = model_.evaluate(x, imposed_), last_x_ = x;
     return last_;
@@ -152,6 +164,33 @@ std::string combination_text(const std::vector<Unknown>& unknowns, const Undeter
   return s;
 }
 
+// A fit that refused infeasible steps and stopped where chi2 still changes, relative to itself, by more
+// than this per relative change of some unknown (|d chi2 / d x| max(|x|, 1) / chi2) is stuck at the
+// edge of the inputs the case accepts, not at a minimum: there the gradient that pushed it to the edge
+// is of order 1; at a minimum rounding leaves it near 1e-13 (the gradient is 2 J^T r, both at a few
+// ulps), and a stationary point where J itself vanishes is below it too.
+constexpr double kEdgeElasticity = 1e-6;
+
+double largest_elasticity(const Eval& e, const Vector& x) {
+  const double chi2 = e.r.squaredNorm();
+  if (!(chi2 > 0)) return 0;
+  const Vector g = 2 * e.J.transpose() * e.r;
+  double most = 0;
+  for (Eigen::Index j = 0; j < x.size(); ++j) most = std::max(most, std::fabs(g[j]) * std::max(std::fabs(x[j]), 1.0) / chi2);
+  return most;
+}
+
+// chi2 that the rounding of the fitted values alone can make: 64 ulps of each value and its evidence.
+double rounding_chi2(const Eval& e, const Model& model) {
+  double sum = 0;
+  for (Eigen::Index c = 0; c < e.f.size(); ++c) {
+    const double r = 64 * std::numeric_limits<double>::epsilon() * (std::fabs(e.f[c]) + std::fabs(model.value(static_cast<std::size_t>(c)))) /
+                     model.sd(static_cast<std::size_t>(c));
+    sum += r * r;
+  }
+  return sum;
+}
+
 // One fit from `start`, with `imposed` (or nothing) imposed.
 Fit fit_from(Model& model, const Vector& start, const ImposedBranch* imposed, const std::vector<Unknown>& unknowns) {
   LeastSquares functor(model, imposed);
@@ -168,13 +207,27 @@ Fit fit_from(Model& model, const Vector& start, const ImposedBranch* imposed, co
   fit.converged = converged(status);
   fit.evaluations = static_cast<int>(lm.nfev());
   fit.fitted.assign(x.data(), x.data() + x.size());
+  if (imposed) {
+    const Branches& b = model.branches();
+    fit.imposed = regime_name(imposed->value ? b.when_true : b.when_false);
+  }
   const Eval e = model.evaluate(x, imposed);
   if (!e.ok) {  // the start itself had no solution
-    fit.converged = false;
+    fit.converged = fit.admissible = false;
     fit.warnings.push_back("the model has no solution at the fit: " + e.problem);
     fit.value.assign(unknowns.size(), kNaN);
+    fit.sd.assign(unknowns.size(), kNaN);
+    fit.correlation.assign(unknowns.size(), std::vector<double>(unknowns.size(), kNaN));
     fit.chi2 = kNaN, fit.p_value = kNaN;
     return fit;
+  }
+  if (fit.converged && functor.infeasible() > 0 && e.r.squaredNorm() > rounding_chi2(e, model)) {
+    const double elasticity = largest_elasticity(e, x);
+    if (elasticity > kEdgeElasticity) {
+      fit.converged = false;
+      fit.solver_status = fmt::format("stopped at the edge of the inputs the case accepts, not at a minimum (chi2's elasticity {:.2g}): {}",
+                                      elasticity, functor.problem());
+    }
   }
   fit.regime = regime_name(e.regime);
   statistics(e, fit);
@@ -189,7 +242,6 @@ Fit fit_from(Model& model, const Vector& start, const ImposedBranch* imposed, co
     fit.residuals.push_back(r);
   }
   if (imposed) {
-    fit.imposed = fit.regime;
     const Eval natural = model.evaluate(x, nullptr);
     fit.decided = natural.ok ? regime_name(natural.regime) : "";
     fit.admissible = natural.ok && natural.regime == e.regime;
@@ -208,8 +260,9 @@ Fit fit_from(Model& model, const Vector& start, const ImposedBranch* imposed, co
 }
 
 // The Gauss-Newton step of the model linearized at x (its minimum-norm least-squares step where the
-// Jacobian is rank-deficient): exact for a model linear in the unknowns, as a regime's model is in the
-// speeds when the evidence is velocities.
+// Jacobian is rank-deficient): exact for a model linear in the unknowns, as a Full Impact's is in the
+// speeds when the evidence is post-impact velocities (its impulse is linear in the relative velocity);
+// a sliding regime's plane turns with the velocities, so there it is a first step.
 Vector linear_start(Model& model, const Vector& x, const ImposedBranch* imposed) {
   const Eval e = model.evaluate(x, imposed);
   if (!e.ok) return x;
@@ -239,7 +292,10 @@ Reconstruction reconstruct(const std::string& case_text, const EvidenceSpec& evi
         const std::size_t colon = e.problem.find(": ");
         throw CaseError(e.problem.substr(0, colon), e.problem.substr(colon + 2));
       }
-      throw CaseError("$.unknowns", "the case has no solution at the unknowns' starting values (" + e.problem + ")");
+      std::string starts;
+      for (std::size_t j = 0; j < out.start.size(); ++j)
+        starts += fmt::format("{}{} = {}", j ? ", " : "", evidence.unknowns[j].label(), out.start[j]);
+      throw CaseError("$.unknowns", fmt::format("the case has no solution at the unknowns' starting values ({}): {}", starts, e.problem));
     }
   }
   // Each regime's model from several starts, its best fit kept: the linear step from the start, the
@@ -265,7 +321,7 @@ Reconstruction reconstruct(const std::string& case_text, const EvidenceSpec& evi
       if (better(g, fits[k])) fits[k] = std::move(g);
     }
   std::vector<Fit> admissible;
-  for (Fit& f : fits) (f.admissible && std::isfinite(f.chi2) ? admissible : out.inadmissible).push_back(std::move(f));
+  for (Fit& f : fits) (f.admissible && f.converged && std::isfinite(f.chi2) ? admissible : out.inadmissible).push_back(std::move(f));
   std::stable_sort(admissible.begin(), admissible.end(), [](const Fit& a, const Fit& c) { return a.chi2 < c.chi2; });
   if (!admissible.empty()) {
     out.best = std::move(admissible.front());
@@ -281,8 +337,8 @@ Reconstruction reconstruct(const std::string& case_text, const EvidenceSpec& evi
   out.best = fit_from(model, from, nullptr, evidence.unknowns);
   out.best.admissible = false;
   out.best.warnings.insert(out.best.warnings.begin(),
-                           "no regime's fit lies in its own regime: this fit of the whole model is on or near the boundary between "
-                           "regimes, where the model has a kink; its standard errors are one side's");
+                           "no regime's converged fit lies in its own regime: this fit of the whole model is on or near the boundary "
+                           "between regimes, where the model has a kink; its standard errors are one side's, and its chi2 is not tested");
   return out;
 }
 

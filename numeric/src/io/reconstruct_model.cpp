@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -27,6 +29,18 @@ double wrap_degrees(double d) {
   return d == -180 ? 180 : d;
 }
 
+// The mirror of an off-diagonal inertia entry ([i][j] for [j][i]), which moves with it so that the
+// tensor stays symmetric (case_numbers.hpp); none for any other path.
+std::optional<JsonPath> mirror_of(const JsonPath& p) {
+  const std::size_t n = p.size();
+  if (n < 3 || p[n - 3].kind != PathStep::Kind::key || p[n - 3].key != "inertia" || p[n - 2].kind != PathStep::Kind::index ||
+      p[n - 1].kind != PathStep::Kind::index || p[n - 2].index == p[n - 1].index)
+    return std::nullopt;
+  JsonPath m = p;
+  std::swap(m[n - 2].index, m[n - 1].index);
+  return m;
+}
+
 }  // namespace
 
 std::vector<JsonPath> Model::variant_paths(const EvidenceSpec& e, std::vector<std::string>& where) {
@@ -46,6 +60,10 @@ std::vector<JsonPath> Model::variant_paths(const EvidenceSpec& e, std::vector<st
     if (e.unknowns[u].kind == Unknown::Kind::path) {
       paths.push_back(e.unknowns[u].path);
       where.push_back(fmt::format("$.unknowns[{}].path", u));
+      if (const auto mirror = mirror_of(e.unknowns[u].path)) {
+        paths.push_back(*mirror);
+        where.push_back(fmt::format("$.unknowns[{}].path", u));
+      }
     }
   return paths;
 }
@@ -72,6 +90,7 @@ Model::Model(const std::string& case_text, const EvidenceSpec& e, const Reconstr
   const std::vector<double> values = variants_.values();
   std::size_t slot = 0;
   path_slot_.assign(e.unknowns.size(), 0);
+  path_variants_.assign(e.unknowns.size(), {});
   for (int v = 0; v < 2; ++v) {
     MovedVelocity m;
     m.vehicle = v;
@@ -95,6 +114,7 @@ Model::Model(const std::string& case_text, const EvidenceSpec& e, const Reconstr
     slot += 3;
     moved_.push_back(m);
   }
+  std::size_t variant = slot;  // the moved velocities' paths come first, one per slot
   for (std::size_t u = 0; u < e.unknowns.size(); ++u) {
     const Unknown& k = e.unknowns[u];
     if (k.kind != Unknown::Kind::path) continue;
@@ -106,7 +126,10 @@ Model::Model(const std::string& case_text, const EvidenceSpec& e, const Reconstr
         throw CaseError(at, fmt::format("moves vehicle {}'s velocity, which its speed or heading unknown already moves", m.vehicle));
     path_slot_[u] = slot++;
     slot_path_.push_back(k.path_text);
+    path_variants_[u] = {variant++};
+    if (mirror_of(k.path)) path_variants_[u].push_back(variant++);
   }
+  variant_count_ = variant;
   {
     CaseSpec copy = spec;
     const CaseInputs in = case_inputs(copy);
@@ -130,7 +153,7 @@ Model::Model(const std::string& case_text, const EvidenceSpec& e, const Reconstr
       for (const MovedVelocity& m : moved_)
         if (m.vehicle == k.vehicle) base = m.base_speed;
     } else if (k.kind == Unknown::Kind::path) {
-      base = values[path_slot_[u]];
+      base = values[path_variants_[u].front()];
     }
     start_[u] = k.start.value_or(base);
   }
@@ -151,7 +174,7 @@ Model::Model(const std::string& case_text, const EvidenceSpec& e, const Reconstr
 Eval Model::evaluate(const Vector& theta, const ImposedBranch* imposed) {
   Eval out;
   const std::size_t p = unknowns(), m = components();
-  std::vector<double> values(slot_path_.size());
+  std::vector<double> values(variant_count_);
   // Per moved velocity: d v / d speed and d v / d heading (per degree).
   std::vector<std::array<Eigen::Vector3d, 2>> d_velocity(moved_.size());
   for (std::size_t i = 0; i < moved_.size(); ++i) {
@@ -165,7 +188,7 @@ Eval Model::evaluate(const Vector& theta, const ImposedBranch* imposed) {
     d_velocity[i] = {along, Eigen::Vector3d(-v.y(), v.x(), 0) * kDegree};
   }
   for (std::size_t u = 0; u < p; ++u)
-    if (evidence_.unknowns[u].kind == Unknown::Kind::path) values[path_slot_[u]] = theta[static_cast<Eigen::Index>(u)];
+    for (const std::size_t i : path_variants_[u]) values[i] = theta[static_cast<Eigen::Index>(u)];
   CaseSpec spec;
   try {
     spec = variants_.with(values.data());
@@ -191,15 +214,8 @@ Eval Model::evaluate(const Vector& theta, const ImposedBranch* imposed) {
       scene = to_scene<Dual>(spec);
       strategies = to_strategies<Dual>(spec);
     }
-    const ImposedBranch* previous = ImposedBranch::current;
-    ImposedBranch::current = imposed;
-    try {
-      a = analyze(scene, strategies, engine_);
-    } catch (...) {
-      ImposedBranch::current = previous;
-      throw;
-    }
-    ImposedBranch::current = previous;
+    const ImposeBranch impose(imposed);
+    a = analyze(scene, strategies, engine_);
   } catch (const CaseError& e) {
     out.problem = e.line();
     return out;

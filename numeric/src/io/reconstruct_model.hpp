@@ -83,6 +83,8 @@ class Model {
   std::vector<MovedVelocity> moved_;
   std::vector<std::size_t> path_slot_;  // per unknown: its slot (path unknowns only)
   std::vector<std::string> slot_path_;  // per slot: the case input it seeds
+  std::vector<std::vector<std::size_t>> path_variants_;  // per unknown: its paths' places in the variants
+  std::size_t variant_count_ = 0;
   CaseVariants variants_;
   std::vector<double> start_;
   std::vector<std::size_t> component_item_, component_output_;

@@ -34,8 +34,9 @@ void unknown_echo(JsonWriter& w, const Unknown& u) {
   w.end_object();
 }
 
+// A fit that did not converge, or lies on a regime boundary, has no chi2 distribution to test against.
 const char* chi2_test(const Fit& f) {
-  if (!std::isfinite(f.p_value)) return "untested";
+  if (!std::isfinite(f.p_value) || !f.converged || !f.admissible) return "untested";
   return f.p_value >= kSignificance ? "passed" : "failed";
 }
 
@@ -162,6 +163,7 @@ std::string reconstruction_json(const Reconstruction& r) {
     w.begin_object();
     w.key("imposed_regime").string(f.imposed);
     w.key("decided_regime").string(f.decided);
+    w.key("converged").boolean(f.converged);
     put(w.key("chi2"), f.chi2);
     w.end_object();
   }
@@ -178,8 +180,8 @@ std::string reconstruction_text(const Reconstruction& r) {
   out += fit_text(r, r.best);
   for (const Fit& f : r.alternatives) out += "\nalternative: " + fit_text(r, f);
   for (const Fit& f : r.inadmissible)
-    out += fmt::format("\nnot admissible: the {} regime's fit (chi2 = {:.4g}) decides {}\n", f.imposed, f.chi2,
-                       f.decided.empty() ? "nothing (no solution)" : f.decided);
+    out += fmt::format("\nnot admissible: the {} regime's fit (chi2 = {:.4g}{}) decides {}\n", f.imposed, f.chi2,
+                       f.converged ? "" : ", not converged", f.decided.empty() ? "nothing (no solution)" : f.decided);
   return out;
 }
 

@@ -40,14 +40,15 @@ struct Undetermined {
 };
 
 // A singular value of the Jacobian (columns scaled to unit length) at most this, relative to the
-// largest, is taken as zero: far above the rounding of a Jacobian computed to a few ulps, far below what
-// evidence with sd at most 1e12 times another's could give a determined combination.
+// largest, is taken as zero. The Jacobian's rounding leaves undetermined directions near 1e-15; but a
+// combination that only evidence 1e9 times less precise (in sd) than the evidence on the rest
+// determines also falls below it, and is reported undetermined: next to the rest, it is.
 inline constexpr double kUndetermined = 1e-9;
 
 struct Fit {
   std::string regime;          // regime_name at the fit
   std::string imposed;         // the regime imposed while fitting ("" when none was)
-  bool admissible = true;      // the fitted inputs decide the imposed regime
+  bool admissible = true;      // the fitted inputs decide the imposed regime (and the fit converged)
   std::string decided;         // the regime the fitted inputs decide
   bool converged = false;
   std::string solver_status;   // the minimizer's stopping reason

@@ -30,10 +30,13 @@ inline thread_local const DualSeeds* dual_seeds = nullptr;
 // Installs `seeds` on this thread for its lifetime.
 class DualSeedScope {
  public:
-  explicit DualSeedScope(const DualSeeds& s) { dual_seeds = &s; }
-  ~DualSeedScope() { dual_seeds = nullptr; }
+  explicit DualSeedScope(const DualSeeds& s) : previous_(dual_seeds) { dual_seeds = &s; }
+  ~DualSeedScope() { dual_seeds = previous_; }
   DualSeedScope(const DualSeedScope&) = delete;
   DualSeedScope& operator=(const DualSeedScope&) = delete;
+
+ private:
+  const DualSeeds* previous_;
 };
 
 template <typename Scalar>

@@ -87,7 +87,7 @@ class DecisionRecording {
   DecisionLog* previous_;
 };
 
-// A branch imposed on a named decision, for every scalar type, while an ImposeBranch lives on the
+// A branch imposed on a named decision, for every scalar type, while an ImposeBranch holds it on the
 // thread: a reconstruction fits each regime's model on its own, then checks that the regime it imposed
 // is the one the fitted inputs decide (io/reconstruct.hpp). Names compare by address: each is one
 // inline array.
@@ -103,17 +103,15 @@ inline bool imposed_or(const char* name, bool decided) {
   return b && b->name == name ? b->value : decided;
 }
 
+// Imposes `branch` (none: nullptr) on this thread for its lifetime.
 class ImposeBranch {
  public:
-  ImposeBranch(const char* name, bool value) : branch_{name, value}, previous_(ImposedBranch::current) {
-    ImposedBranch::current = &branch_;
-  }
+  explicit ImposeBranch(const ImposedBranch* branch) : previous_(ImposedBranch::current) { ImposedBranch::current = branch; }
   ~ImposeBranch() { ImposedBranch::current = previous_; }
   ImposeBranch(const ImposeBranch&) = delete;
   ImposeBranch& operator=(const ImposeBranch&) = delete;
 
  private:
-  ImposedBranch branch_;
   const ImposedBranch* previous_;
 };
 
