@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 
 #include <Eigen/Dense>
@@ -37,7 +36,7 @@ struct LeastSquares : Eigen::DenseFunctor<double> {
     fvec.setZero(values());
     if (!e.ok) {
       fvec.setConstant(kInfeasible);
-      ++infeasible_, problem_ = e.problem;
+      ++infeasible_, problem_ = e.problem, refused_ = x;
     } else {
       fvec.head(e.r.size()) = e.r;
     }
@@ -52,9 +51,10 @@ struct LeastSquares : Eigen::DenseFunctor<double> {
     fjac.topRows(e.J.rows()) = e.J;
     return 0;
   }
-  // Trial points the case refused, and the last one's problem.
+  // Trial points the case refused, and the last one and its problem.
   int infeasible() const { return infeasible_; }
   const std::string& problem() const { return problem_; }
+  const Vector& refused() const { return refused_; }
 
  private:
   Model& model_;
@@ -63,6 +63,7 @@ struct LeastSquares : Eigen::DenseFunctor<double> {
   Eval last_;
   int infeasible_ = 0;
   std::string problem_;
+  Vector refused_;
   const Eval& at(const Vector& x) {
     if (last_x_.size() != x.size() || last_x_ != x) last_ = model_.evaluate(x, imposed_), last_x_ = x;
     return last_;
@@ -164,31 +165,21 @@ std::string combination_text(const std::vector<Unknown>& unknowns, const Undeter
   return s;
 }
 
-// A fit that refused infeasible steps and stopped where chi2 still changes, relative to itself, by more
-// than this per relative change of some unknown (|d chi2 / d x| max(|x|, 1) / chi2) is stuck at the
-// edge of the inputs the case accepts, not at a minimum: there the gradient that pushed it to the edge
-// is of order 1; at a minimum rounding leaves it near 1e-13 (the gradient is 2 J^T r, both at a few
-// ulps), and a stationary point where J itself vanishes is below it too.
-constexpr double kEdgeElasticity = 1e-6;
+// A fit is stuck at the edge of the inputs the case accepts, not at a minimum, when the last trial
+// point the case refused lies within 1e-6 (relative) of where it stopped, in every unknown, and the
+// model linearized there still promises chi2 a fall above this: a Gauss-Newton step delta with
+// |J delta|^2 above it moves some estimate by more than 1e-3 of its sd (|delta_j| <= sd_j |J delta|).
+// A minimum has |J delta|^2 at rounding level; a stationary point where J vanishes is far from the
+// refused trials, which were the long steps its flat chi2 invited.
+constexpr double kEdgeDecrement = 1e-6;
 
-double largest_elasticity(const Eval& e, const Vector& x) {
-  const double chi2 = e.r.squaredNorm();
-  if (!(chi2 > 0)) return 0;
-  const Vector g = 2 * e.J.transpose() * e.r;
-  double most = 0;
-  for (Eigen::Index j = 0; j < x.size(); ++j) most = std::max(most, std::fabs(g[j]) * std::max(std::fabs(x[j]), 1.0) / chi2);
-  return most;
-}
-
-// chi2 that the rounding of the fitted values alone can make: 64 ulps of each value and its evidence.
-double rounding_chi2(const Eval& e, const Model& model) {
-  double sum = 0;
-  for (Eigen::Index c = 0; c < e.f.size(); ++c) {
-    const double r = 64 * std::numeric_limits<double>::epsilon() * (std::fabs(e.f[c]) + std::fabs(model.value(static_cast<std::size_t>(c)))) /
-                     model.sd(static_cast<std::size_t>(c));
-    sum += r * r;
-  }
-  return sum;
+bool stuck_at_edge(const Eval& e, const Vector& x, const Vector& refused) {
+  if (refused.size() != x.size()) return false;
+  for (Eigen::Index j = 0; j < x.size(); ++j)
+    if (!(std::fabs(refused[j] - x[j]) <= 1e-6 * std::max(std::fabs(x[j]), 1.0))) return false;
+  Eigen::CompleteOrthogonalDecomposition<Matrix> cod(e.J);
+  cod.setThreshold(kUndetermined);
+  return (e.J * cod.solve(e.r)).squaredNorm() > kEdgeDecrement;
 }
 
 // One fit from `start`, with `imposed` (or nothing) imposed.
@@ -221,13 +212,9 @@ Fit fit_from(Model& model, const Vector& start, const ImposedBranch* imposed, co
     fit.chi2 = kNaN, fit.p_value = kNaN;
     return fit;
   }
-  if (fit.converged && functor.infeasible() > 0 && e.r.squaredNorm() > rounding_chi2(e, model)) {
-    const double elasticity = largest_elasticity(e, x);
-    if (elasticity > kEdgeElasticity) {
-      fit.converged = false;
-      fit.solver_status = fmt::format("stopped at the edge of the inputs the case accepts, not at a minimum (chi2's elasticity {:.2g}): {}",
-                                      elasticity, functor.problem());
-    }
+  if (fit.converged && functor.infeasible() > 0 && stuck_at_edge(e, x, functor.refused())) {
+    fit.converged = false;
+    fit.solver_status = fmt::format("stopped at the edge of the inputs the case accepts, not at a minimum: {}", functor.problem());
   }
   fit.regime = regime_name(e.regime);
   statistics(e, fit);
@@ -307,7 +294,9 @@ Reconstruction reconstruct(const std::string& case_text, const EvidenceSpec& evi
   else regimes = {std::nullopt};
   const auto imposed = [&](std::size_t k) { return regimes[k] ? &*regimes[k] : nullptr; };
   std::vector<Fit> fits;
-  const auto better = [](const Fit& a, const Fit& c) { return std::isfinite(a.chi2) && !(a.chi2 >= c.chi2); };
+  // A converged fit in its own regime over any other, then the least chi2.
+  const auto rank = [](const Fit& f) { return !std::isfinite(f.chi2) ? 3 : f.converged && f.admissible ? 0 : f.converged ? 1 : 2; };
+  const auto better = [&](const Fit& a, const Fit& c) { return rank(a) < rank(c) || (rank(a) == rank(c) && a.chi2 < c.chi2); };
   for (std::size_t k = 0; k < regimes.size(); ++k) {
     Fit f = fit_from(model, linear_start(model, x0, imposed(k)), imposed(k), evidence.unknowns);
     Fit g = fit_from(model, x0, imposed(k), evidence.unknowns);
@@ -336,9 +325,15 @@ Reconstruction reconstruct(const std::string& case_text, const EvidenceSpec& evi
   const Vector from = closest ? Eigen::Map<const Vector>(closest->fitted.data(), static_cast<Eigen::Index>(closest->fitted.size())) : x0;
   out.best = fit_from(model, from, nullptr, evidence.unknowns);
   out.best.admissible = false;
+  // Why: every regime's converged fit decides another regime (a kink between them), or a fit did not
+  // converge.
+  bool kink = b.decision != nullptr;
+  for (const Fit& f : out.inadmissible) kink = kink && f.converged && !f.decided.empty() && f.decided != f.imposed;
   out.best.warnings.insert(out.best.warnings.begin(),
-                           "no regime's converged fit lies in its own regime: this fit of the whole model is on or near the boundary "
-                           "between regimes, where the model has a kink; its standard errors are one side's, and its chi2 is not tested");
+                           kink ? "no regime's fit lies in its own regime: this fit of the whole model is on or near the boundary between "
+                                  "regimes, where the model has a kink; its standard errors are one side's, and its chi2 is not tested"
+                                : "no fit both converged and lies in its own regime (see the fits not admitted): this fit of the whole "
+                                  "model is reported as the minimizer left it, and its chi2 is not tested");
   return out;
 }
 

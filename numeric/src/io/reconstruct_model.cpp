@@ -115,6 +115,8 @@ Model::Model(const std::string& case_text, const EvidenceSpec& e, const Reconstr
     moved_.push_back(m);
   }
   std::size_t variant = slot;  // the moved velocities' paths come first, one per slot
+  CaseSpec listed = spec;
+  const CaseInputs in = case_inputs(listed);
   for (std::size_t u = 0; u < e.unknowns.size(); ++u) {
     const Unknown& k = e.unknowns[u];
     if (k.kind != Unknown::Kind::path) continue;
@@ -124,27 +126,26 @@ Model::Model(const std::string& case_text, const EvidenceSpec& e, const Reconstr
     for (const MovedVelocity& m : moved_)
       if (k.path_text.rfind(fmt::format("$.vehicles[{}].velocity", m.vehicle), 0) == 0)
         throw CaseError(at, fmt::format("moves vehicle {}'s velocity, which its speed or heading unknown already moves", m.vehicle));
+    // The case input it seeds: its own path, or its mirror's, which the inputs list instead ([0][2]
+    // for [2][0]).
+    std::string seeded;
+    const auto mirror = mirror_of(k.path);
+    for (const CaseInput& i : in.inputs)
+      if (i.path == k.path_text || (mirror && i.path == path_text(*mirror))) seeded = i.path;
+    if (seeded.empty()) {
+      std::string why = "is not a numeric input of the case";
+      for (const auto& [path, reason] : in.fixed)
+        if (path == k.path_text) why = "cannot be an unknown: " + reason;
+      throw CaseError(at, why);
+    }
+    for (std::size_t j = 0; j < slot_path_.size(); ++j)
+      if (slot_path_[j] == seeded) throw CaseError(at, "moves the same input as another unknown (an inertia entry moves its mirror)");
     path_slot_[u] = slot++;
-    slot_path_.push_back(k.path_text);
+    slot_path_.push_back(seeded);
     path_variants_[u] = {variant++};
     if (mirror_of(k.path)) path_variants_[u].push_back(variant++);
   }
   variant_count_ = variant;
-  {
-    CaseSpec copy = spec;
-    const CaseInputs in = case_inputs(copy);
-    for (std::size_t u = 0; u < e.unknowns.size(); ++u) {
-      const Unknown& k = e.unknowns[u];
-      if (k.kind != Unknown::Kind::path) continue;
-      bool found = false;
-      for (const CaseInput& i : in.inputs) found = found || i.path == k.path_text;
-      if (found) continue;
-      std::string why = "is not a numeric input of the case";
-      for (const auto& [path, reason] : in.fixed)
-        if (path == k.path_text) why = "cannot be an unknown: " + reason;
-      throw CaseError(fmt::format("$.unknowns[{}].path", u), why);
-    }
-  }
   start_.resize(e.unknowns.size());
   for (std::size_t u = 0; u < e.unknowns.size(); ++u) {
     const Unknown& k = e.unknowns[u];

@@ -107,7 +107,7 @@ std::string number_or_dash(double x, const char* spec) {
 
 std::string fit_text(const Reconstruction& r, const Fit& f) {
   std::string out = fmt::format("regime {}{}; chi2 = {:.4g} with {} degrees of freedom, p = {} (test at {}: {})\n", f.regime,
-                                f.admissible ? "" : fmt::format(" (the fitted inputs decide {})", f.decided), f.chi2, f.dof,
+                                f.admissible ? "" : f.decided != f.regime ? fmt::format(" (the fitted inputs decide {})", f.decided) : std::string(" (not admitted)"), f.chi2, f.dof,
                                 number_or_dash(f.p_value, "{:.3g}"), kSignificance, chi2_test(f));
   out += fmt::format("  {:<34} {:>14} {:>12}\n", "unknown", "estimate", "sd");
   for (std::size_t j = 0; j < r.unknowns.size(); ++j)
@@ -180,7 +180,8 @@ std::string reconstruction_text(const Reconstruction& r) {
   out += fit_text(r, r.best);
   for (const Fit& f : r.alternatives) out += "\nalternative: " + fit_text(r, f);
   for (const Fit& f : r.inadmissible)
-    out += fmt::format("\nnot admissible: the {} regime's fit (chi2 = {:.4g}{}) decides {}\n", f.imposed, f.chi2,
+    out += fmt::format("\nnot admissible: {} (chi2 = {:.4g}{}) decides {}\n",
+                       f.imposed.empty() ? std::string("the fit") : fmt::format("the {} regime's fit", f.imposed), f.chi2,
                        f.converged ? "" : ", not converged", f.decided.empty() ? "nothing (no solution)" : f.decided);
   return out;
 }

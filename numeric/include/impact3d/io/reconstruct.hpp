@@ -40,9 +40,10 @@ struct Undetermined {
 };
 
 // A singular value of the Jacobian (columns scaled to unit length) at most this, relative to the
-// largest, is taken as zero. The Jacobian's rounding leaves undetermined directions near 1e-15; but a
-// combination that only evidence 1e9 times less precise (in sd) than the evidence on the rest
-// determines also falls below it, and is reported undetermined: next to the rest, it is.
+// largest, is taken as zero. The Jacobian's rounding leaves undetermined directions near 1e-15. Each
+// column being scaled, an unknown that only imprecise evidence sees is still determined; but a
+// combination of unknowns that only evidence 1e9 times less precise (in sd) than the evidence on the
+// rest determines falls below it too, and is reported undetermined: next to the rest, it is.
 inline constexpr double kUndetermined = 1e-9;
 
 struct Fit {
@@ -74,7 +75,9 @@ struct Reconstruction {
   std::vector<double> start;   // per unknown
   Fit best;
   std::vector<Fit> alternatives;  // other admissible fits, by chi2
-  std::vector<Fit> inadmissible;  // imposed regimes whose fit the fitted inputs do not decide
+  // Fits not admitted: the fitted inputs decide another regime than the one imposed, or the fit did not
+  // converge.
+  std::vector<Fit> inadmissible;
 };
 
 // Throws CaseError: for the case as `solve` would; for an unknown or an evidence item the case cannot
