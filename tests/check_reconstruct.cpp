@@ -1,14 +1,19 @@
 // The reconstruction (io/reconstruct.hpp) against what is known without it:
 // - round trip: seeded random collisions in 3D and in the planar limit are solved forward from known
 //   speeds for every strategy and regime; their exact post-impact velocities, fed back as evidence,
-//   give back the speeds and the regime;
-// - noise of known sd added to Figure 8's evidence over seeded trials: the spread of the estimates is
-//   the reported standard error, within its sampling error, and chi2 averages its degrees of freedom;
+//   give back the speeds and the regime, and the reported sd equal those of a Jacobian by central
+//   differences of the forward solve; so do headings, restitution and a product of inertia on Figure 8;
+// - noise of known sd added to a linear (Full Impact) model's evidence over seeded trials: the spread
+//   of the estimates is the reported standard error, within its sampling error, and chi2 averages its
+//   degrees of freedom;
 // - a set-up whose evidence cannot determine the speeds (a central, collinear, perfectly plastic
 //   impact: only the momentum is left) is reported unidentifiable along the combination derived by
-//   hand; contradictory evidence fails the chi2 test.
-#include <cmath>
+//   hand; contradictory evidence fails the chi2 test;
+// - two regimes that both fit are both reported, a fit on the kink between regimes and a fit held at
+//   the edge of what the case accepts are flagged, each checked by forward solves of its own; angles
+//   wrap; a known speed is the unknown itself.
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 #include <optional>
@@ -316,7 +321,7 @@ TEST_CASE("round trip with headings, restitution and a product of inertia unknow
   }
 }
 
-TEST_CASE("a PDOF across 0/360 and a known speed: residuals wrap, and the thread's imposed branch and seeds are left unset") {
+TEST_CASE("a PDOF across 0/360 and a known speed: residuals wrap, and the thread's imposed branch and seeds are the caller's again") {
   const auto [text, o] = figure8();
   const Forward f = forward_with(text, *o.strategy);
   const double pdof = f.numbers[output_index("vehicles[1].pdof_deg")];
