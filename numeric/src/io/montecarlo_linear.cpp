@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "impact3d/io/montecarlo_linear.hpp"
+
+#include "impact3d/io/angle_difference.hpp"
 #include "impact3d/io/sensitivity.hpp"
 #include "impact3d/uncertainty/moments.hpp"
 
@@ -17,12 +19,6 @@ namespace impact3d::io {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// a - b for angles in degrees, on the circle: in [-180, 180).
-double angle_difference(double a, double b) {
-  const double d = std::fmod(a - b, 360.0);
-  return d >= 180 ? d - 360 : d < -180 ? d + 360 : d;
-}
 
 // The quantity an output measures, so that an output that is zero throughout (the normal sliding of a
 // planar case) is compared at the scale of its kind rather than at its own rounding noise.

@@ -7,6 +7,7 @@
 
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/format_double.hpp"
+#include "impact3d/io/json_number.hpp"
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/result_json.hpp"
 #include "impact3d/io/montecarlo.hpp"
@@ -16,11 +17,6 @@ namespace impact3d::io {
 
 namespace {
 
-void put(JsonWriter& w, double x) {
-  if (std::isfinite(x)) w.raw(fmt::format("{}", x));
-  else w.null();
-}
-
 double fraction(std::uint64_t count, std::uint64_t of) { return of ? static_cast<double>(count) / static_cast<double>(of) : 0.0; }
 
 void write_summary(JsonWriter& w, const OutputSummary& o, const Linearized& lin) {
@@ -29,26 +25,26 @@ void write_summary(JsonWriter& w, const OutputSummary& o, const Linearized& lin)
   const auto c = static_cast<std::size_t>(o.output - monte_carlo_outputs().data());
   if (lin.note.empty() && c < lin.mean.size()) {
     w.key("linearized").begin_object();
-    put(w.key("mean"), lin.mean[c]);
-    put(w.key("sd"), lin.sd[c]);
+    put_shortest(w.key("mean"), lin.mean[c]);
+    put_shortest(w.key("sd"), lin.sd[c]);
     w.end_object();
   }
   w.key("count").raw(std::to_string(s.count));
   if (o.undefined) w.key("undefined").raw(std::to_string(o.undefined));
   if (o.output->angle) w.key("angle").string(o.output->from_zero ? "[0, 360)" : "(-180, 180]");
   if (s.count) {
-    put(w.key("mean"), s.mean);
-    put(w.key("sd"), s.sd);
+    put_shortest(w.key("mean"), s.mean);
+    put_shortest(w.key("sd"), s.sd);
     w.key("percentiles").begin_object();
-    for (std::size_t p = 0; p < uncertainty::kPercentiles.size(); ++p) put(w.key(uncertainty::kPercentileKeys[p]), s.percentile[p]);
+    for (std::size_t p = 0; p < uncertainty::kPercentiles.size(); ++p) put_shortest(w.key(uncertainty::kPercentileKeys[p]), s.percentile[p]);
     w.end_object();
-    put(w.key("mean_se"), s.mean_se);
+    put_shortest(w.key("mean_se"), s.mean_se);
     w.key("percentile_se").begin_object();
     for (std::size_t p = 0; p < uncertainty::kPercentiles.size(); ++p)
-      put(w.key(uncertainty::kPercentileKeys[p]), s.percentile_se[p]);
+      put_shortest(w.key(uncertainty::kPercentileKeys[p]), s.percentile_se[p]);
     w.end_object();
-    put(w.key("min"), s.min);
-    put(w.key("max"), s.max);
+    put_shortest(w.key("min"), s.min);
+    put_shortest(w.key("max"), s.max);
   }
   w.end_object();
 }
@@ -130,10 +126,10 @@ std::string montecarlo_json(const MonteCarloRun& run) {
     w.end_array();
     w.key("regime_probability").begin_object();
     for (std::size_t k = 0; k < kRegimeNames.size(); ++k)
-      if (r.regimes[k]) put(w.key(kRegimeNames[k]), fraction(r.regimes[k], r.solved));
+      if (r.regimes[k]) put_shortest(w.key(kRegimeNames[k]), fraction(r.regimes[k], r.solved));
     w.end_object();
     w.key("warning_probability").begin_object();
-    for (std::size_t k = 0; k < kWarningNames.size(); ++k) put(w.key(kWarningNames[k]), fraction(r.warnings[k], r.solved));
+    for (std::size_t k = 0; k < kWarningNames.size(); ++k) put_shortest(w.key(kWarningNames[k]), fraction(r.warnings[k], r.solved));
     w.end_object();
     w.key("linearization").begin_object();
     if (!r.linear.note.empty()) {

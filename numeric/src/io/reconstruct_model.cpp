@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "impact3d/io/angle_difference.hpp"
 #include "impact3d/io/case_numbers.hpp"
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/montecarlo.hpp"
@@ -23,11 +24,6 @@ namespace impact3d::io::reconstruct_model {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180;
-
-double wrap_degrees(double d) {
-  d = std::remainder(d, 360.0);
-  return d == -180 ? 180 : d;
-}
 
 // The mirror of an off-diagonal inertia entry ([i][j] for [j][i]), which moves with it so that the
 // tensor stays symmetric (case_numbers.hpp); none for any other path.
@@ -247,7 +243,7 @@ Eval Model::evaluate(const Vector& theta, const ImposedBranch* imposed) {
       x = v[o];
     }
     out.f[row] = x.value();
-    const double residual = component_angle_[c] ? wrap_degrees(x.value() - y_[c]) : x.value() - y_[c];
+    const double residual = component_angle_[c] ? angle_difference(x.value(), y_[c]) : x.value() - y_[c];
     out.r[row] = residual / sd_[c];
     const auto d = [&](std::size_t slot) { return x.derivatives()[static_cast<Eigen::Index>(slot)]; };
     for (std::size_t u = 0; u < p; ++u)

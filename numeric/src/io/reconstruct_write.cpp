@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_number.hpp"
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/present.hpp"
 #include "impact3d/io/reconstruct.hpp"
@@ -18,11 +19,6 @@ namespace {
 
 // The significance level of the chi2 test of consistency.
 constexpr double kSignificance = 0.01;
-
-void put(JsonWriter& w, double x) {
-  if (std::isfinite(x)) w.raw(fmt::format("{}", x));
-  else w.null();
-}
 
 void unknown_echo(JsonWriter& w, const Unknown& u) {
   w.begin_object();
@@ -55,15 +51,15 @@ void write_fit(JsonWriter& w, const Reconstruction& r, const Fit& f) {
     w.begin_object();
     w.key("unknown");
     unknown_echo(w, r.unknowns[j]);
-    put(w.key("value"), j < f.value.size() ? f.value[j] : NAN);
-    put(w.key("sd"), j < f.sd.size() ? f.sd[j] : NAN);
+    put_shortest(w.key("value"), j < f.value.size() ? f.value[j] : NAN);
+    put_shortest(w.key("sd"), j < f.sd.size() ? f.sd[j] : NAN);
     w.end_object();
   }
   w.end_array();
   w.key("correlation").begin_array();
   for (const auto& row : f.correlation) {
     w.begin_array();
-    for (double c : row) put(w, c);
+    for (double c : row) put_shortest(w, c);
     w.end_array();
   }
   w.end_array();
@@ -72,17 +68,17 @@ void write_fit(JsonWriter& w, const Reconstruction& r, const Fit& f) {
     w.begin_object();
     w.key("evidence").raw(fmt::format("{}", e.item));
     w.key("output").string(e.output);
-    put(w.key("value"), e.value);
-    put(w.key("sd"), e.sd);
-    put(w.key("fitted"), e.fitted);
-    put(w.key("residual"), e.residual);
-    put(w.key("standardized"), e.standardized);
+    put_shortest(w.key("value"), e.value);
+    put_shortest(w.key("sd"), e.sd);
+    put_shortest(w.key("fitted"), e.fitted);
+    put_shortest(w.key("residual"), e.residual);
+    put_shortest(w.key("standardized"), e.standardized);
     w.end_object();
   }
   w.end_array();
-  put(w.key("chi2"), f.chi2);
+  put_shortest(w.key("chi2"), f.chi2);
   w.key("dof").raw(fmt::format("{}", f.dof));
-  put(w.key("p_value"), f.p_value);
+  put_shortest(w.key("p_value"), f.p_value);
   w.key("chi2_test").string(chi2_test(f));
   w.key("identifiable").boolean(f.identifiable);
   w.key("undetermined").begin_array();
@@ -90,9 +86,9 @@ void write_fit(JsonWriter& w, const Reconstruction& r, const Fit& f) {
     w.begin_object();
     w.key("combination").begin_object();
     for (std::size_t j = 0; j < p; ++j)
-      if (u.combination[j] != 0) put(w.key(r.unknowns[j].label()), u.combination[j]);
+      if (u.combination[j] != 0) put_shortest(w.key(r.unknowns[j].label()), u.combination[j]);
     w.end_object();
-    put(w.key("relative_singular_value"), u.relative_singular_value);
+    put_shortest(w.key("relative_singular_value"), u.relative_singular_value);
     w.end_object();
   }
   w.end_array();
@@ -145,11 +141,11 @@ std::string reconstruction_json(const Reconstruction& r) {
     w.key("unknown");
     unknown_echo(w, r.unknowns[j]);
     w.key("label").string(r.unknowns[j].label());
-    put(w.key("start"), r.start[j]);
+    put_shortest(w.key("start"), r.start[j]);
     w.end_object();
   }
   w.end_array();
-  put(w.key("significance"), kSignificance);
+  put_shortest(w.key("significance"), kSignificance);
   write_fit(w, r, r.best);
   w.key("alternatives").begin_array();
   for (const Fit& f : r.alternatives) {
@@ -164,7 +160,7 @@ std::string reconstruction_json(const Reconstruction& r) {
     w.key("imposed_regime").string(f.imposed);
     w.key("decided_regime").string(f.decided);
     w.key("converged").boolean(f.converged);
-    put(w.key("chi2"), f.chi2);
+    put_shortest(w.key("chi2"), f.chi2);
     w.end_object();
   }
   w.end_array();

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_number.hpp"
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/present.hpp"
 #include "impact3d/io/result_json.hpp"
@@ -16,11 +17,6 @@ namespace impact3d::io {
 
 namespace {
 
-void put(JsonWriter& w, double x) {
-  if (std::isfinite(x)) w.raw(fmt::format("{}", x));
-  else w.null();
-}
-
 // output -> { input -> value } for the outputs the document writes.
 template <typename Value>
 void by_output(JsonWriter& w, const SensitivityRun& run, const SensitivityResult& r, Value&& value) {
@@ -29,7 +25,7 @@ void by_output(JsonWriter& w, const SensitivityRun& run, const SensitivityResult
   for (std::size_t c = 0; c < outputs.size(); ++c) {
     if (!r.written[c]) continue;
     w.key(outputs[c].text).begin_object();
-    for (std::size_t j = 0; j < run.inputs.size(); ++j) put(w.key(run.inputs[j]), value(c, j));
+    for (std::size_t j = 0; j < run.inputs.size(); ++j) put_shortest(w.key(run.inputs[j]), value(c, j));
     w.end_object();
   }
   w.end_object();
@@ -45,7 +41,7 @@ std::string sensitivity_json(const SensitivityRun& run) {
   w.key("engine").string(run.engine == Engine::direct ? "direct" : "generated");
   w.key("precision").string("double");
   w.key("inputs").begin_object();
-  for (std::size_t j = 0; j < n; ++j) put(w.key(run.inputs[j]), run.input_values[j]);
+  for (std::size_t j = 0; j < n; ++j) put_shortest(w.key(run.inputs[j]), run.input_values[j]);
   w.end_object();
   w.key("fixed").begin_object();
   for (const auto& [path, why] : run.fixed) w.key(path).string(why);
@@ -59,16 +55,16 @@ std::string sensitivity_json(const SensitivityRun& run) {
     if (r.margin_of.empty()) {
       w.key("regime_margin").null();
     } else {
-      put(w.key("regime_margin"), r.regime_margin);
+      put_shortest(w.key("regime_margin"), r.regime_margin);
       w.key("regime_margin_of").string(r.margin_of);
       w.key("regime_margin_derivatives").begin_object();
-      for (std::size_t j = 0; j < n; ++j) put(w.key(run.inputs[j]), r.margin_derivatives[j]);
+      for (std::size_t j = 0; j < n; ++j) put_shortest(w.key(run.inputs[j]), r.margin_derivatives[j]);
       w.end_object();
       // Where the linearized margin reaches zero when one input alone moves: how far the derivatives hold.
       w.key("regime_switch_estimate").begin_object();
       for (std::size_t j = 0; j < n; ++j)
         if (r.margin_derivatives[j] != 0 && std::isfinite(r.margin_derivatives[j]))
-          put(w.key(run.inputs[j]), run.input_values[j] - r.regime_margin / r.margin_derivatives[j]);
+          put_shortest(w.key(run.inputs[j]), run.input_values[j] - r.regime_margin / r.margin_derivatives[j]);
       w.end_object();
     }
     w.key("warnings").begin_array();
@@ -77,7 +73,7 @@ std::string sensitivity_json(const SensitivityRun& run) {
     w.key("values").begin_object();
     const auto& outputs = monte_carlo_outputs();
     for (std::size_t c = 0; c < outputs.size(); ++c)
-      if (r.written[c]) put(w.key(outputs[c].text), r.values[c]);
+      if (r.written[c]) put_shortest(w.key(outputs[c].text), r.values[c]);
     w.end_object();
     w.key("derivatives");
     by_output(w, run, r, [&](std::size_t c, std::size_t j) { return r.derivatives[c * n + j]; });

@@ -27,7 +27,7 @@ struct EvidenceResidual {
   std::string output;     // "vehicles[0].velocity[1]", or "speed[0]"
   double value = 0, sd = 0;
   double fitted = 0;      // the model's value at the fit (NaN where the result has none)
-  double residual = 0;    // fitted - value; an angle's wrapped into (-180, 180]
+  double residual = 0;    // fitted - value; an angle's on the circle, in [-180, 180)
   double standardized = 0;  // residual / sd
 };
 
