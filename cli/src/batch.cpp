@@ -1,5 +1,5 @@
 // `impact3d batch`: the input is read in blocks of lines, each block solved by --jobs threads and written
-// in input order before the next is read, so memory stays flat in the number of rows and output appears
+// in input order while the next is solved, so memory stays flat in the number of rows and output appears
 // as it is done. Each row is the document `solve --format json` prints for its case, on one line, with
 // "line" first; a row that cannot be read or solved becomes {"line": i, "error": "..."} and the run
 // goes on. Output is written with write(2) in whole rows only. SIGINT or SIGTERM stop the run: the rows
@@ -22,6 +22,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <future>
 #include <optional>
 #include <thread>
@@ -83,7 +84,10 @@ struct Row {
 // and reported, not held.
 class LineReader {
  public:
-  explicit LineReader(int fd) : fd_(fd) {}
+  explicit LineReader(int fd) : fd_(fd) {
+    struct stat st {};
+    regular_ = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+  }
 
   // The next non-blank line; false at the end of the input.
   bool next(Row& row) {
@@ -112,6 +116,9 @@ class LineReader {
     }
   }
   long lines() const { return line_; }
+  // True when the next line is whole in hand, or the input is a regular file: reading it cannot wait
+  // for a writer in the middle of a line.
+  bool line_ready() const { return regular_ || std::memchr(buf_ + pos_, '\n', len_ - pos_) != nullptr; }
   // True when reading would not wait for a writer: bytes in hand, or the descriptor has some or is at
   // its end (a regular file always is).
   bool ready() const {
@@ -142,6 +149,7 @@ class LineReader {
   long line_ = 0;
   std::uint64_t consumed_ = 0;
   bool stopped_ = false;
+  bool regular_ = false;
 };
 
 // The one-line result document with "line" first.
@@ -345,16 +353,28 @@ int batch(const BatchOptions& o) {
   auto wait_write = [&] {
     if (pending.valid() && !pending.get()) output_lost = true;
   };
-  while (!stop_signal && !output_lost) {
-    rows.clear();
+  // The next block is read by this thread while the others solve the current one (with --jobs 2 or
+  // more), as far as whole lines are in hand: the current block's answers never wait for a slow
+  // producer. A read error there is kept until the current block is written. Rows read ahead when a
+  // stop comes were not started, and are not counted, as the rows of a block not yet reached.
+  std::vector<Row> ahead;
+  std::exception_ptr ahead_error;
+  auto read_block = [&](std::vector<Row>& into, bool wait) {
+    into.clear();
     std::size_t bytes = 0;
     Row row;
     // A block also ends when the input would keep it waiting, so that a slow producer (cases piped one
     // at a time) gets each answer as soon as it is solved.
-    while (rows.size() < kBlockRows && bytes < kBlockBytes && !stop_signal && (rows.empty() || reader.ready()) && reader.next(row)) {
+    auto more = [&] { return wait ? into.empty() || reader.ready() : reader.line_ready(); };
+    while (into.size() < kBlockRows && bytes < kBlockBytes && !stop_signal && more() && reader.next(row)) {
       bytes += row.text.size();
-      rows.push_back(std::move(row));
+      into.push_back(std::move(row));
     }
+  };
+  while (!stop_signal && !output_lost) {
+    if (ahead_error) std::rethrow_exception(ahead_error);
+    if (ahead.empty()) read_block(rows, true);
+    else std::swap(rows, ahead), ahead.clear();
     if (rows.empty()) break;
     results.assign(rows.size(), {});
     done.assign(rows.size(), 0);
@@ -370,6 +390,13 @@ int batch(const BatchOptions& o) {
       {
         const SignalsToMain mask;
         for (unsigned t = 1; t < std::min<std::size_t>(jobs, rows.size()); ++t) pool.emplace_back(work);
+      }
+      if (!pool.empty()) {
+        try {
+          read_block(ahead, false);
+        } catch (...) {
+          ahead_error = std::current_exception();
+        }
       }
       work();
     }

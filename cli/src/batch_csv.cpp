@@ -6,8 +6,10 @@
 #include "batch_csv.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -342,10 +344,10 @@ std::string split(std::string_view line, std::vector<Cell>& cells) {
       if (i < line.size() && line[i] != ',') return fmt::format("cell {}: text after the closing quote", count);
     } else {
       const std::size_t end = std::min(line.find(',', i), line.size());
-      cell.text.assign(line.substr(i, end - i));
-      while (!cell.text.empty() && (cell.text.back() == ' ' || cell.text.back() == '\t')) cell.text.pop_back();
-      const std::size_t lead = cell.text.find_first_not_of(" \t");
-      cell.text.erase(0, lead == std::string::npos ? cell.text.size() : lead);
+      std::size_t from = i, to = end;  // trimmed of spaces and tabs
+      while (from < to && (line[from] == ' ' || line[from] == '\t')) ++from;
+      while (to > from && (line[to - 1] == ' ' || line[to - 1] == '\t')) --to;
+      cell.text.assign(line.data() + from, to - from);
       i = end;
     }
     if (i >= line.size()) return {};
@@ -435,7 +437,8 @@ std::string result_rows(std::string_view document, const io::JsonPick& pick, lon
   for (const auto& s : pick.spans())
     if (!of_document(s.column)) results = std::max(results, s.group + 1);
   constexpr std::size_t kMissing = ~std::size_t{0};
-  std::vector<std::size_t> at(results * width, kMissing);
+  thread_local std::vector<std::size_t> at;  // kept from row to row: no allocation once warm
+  at.assign(results * width, kMissing);
   const auto& spans = pick.spans();
   for (std::size_t i = 0; i < spans.size(); ++i) {
     const auto& s = spans[i];
@@ -444,40 +447,66 @@ std::string result_rows(std::string_view document, const io::JsonPick& pick, lon
       for (std::size_t k = 0; k < results; ++k) at[k * width + s.column] = i;
   }
   std::string out;
+  out.reserve(1024 * std::max<std::size_t>(results, 1));
+  auto text_of = [&](std::size_t k, std::size_t column) -> std::optional<std::string_view> {
+    const std::size_t i = at[k * width + column];
+    if (i == kMissing) return std::nullopt;
+    return document.substr(spans[i].begin, spans[i].end - spans[i].begin);
+  };
   // A cell as the document has it: a string as the writer was given it, a number or literal as written
   // (null: an empty cell).
   auto cell = [&](std::size_t k, std::size_t column) {
+    const auto text = text_of(k, column);
+    if (!text) return;
     const std::size_t i = at[k * width + column];
-    if (i == kMissing) return;
-    const std::string_view text = document.substr(spans[i].begin, spans[i].end - spans[i].begin);
     if (spans[i].string != io::JsonPick::kNoString) put_text(out, pick.string(spans[i]));
-    else if (text != "null") out += text;
+    else if (*text != "null") out += *text;
   };
   // The strategy and the warnings are a container each: short, read as JSON.
-  auto container = [&](std::size_t k, std::size_t column, JsonValue& scratch) -> const JsonValue* {
-    const std::size_t i = at[k * width + column];
-    if (i == kMissing) return nullptr;
-    scratch = JsonValue{};
-    if (!io::parse_json_tree_fast(document.substr(spans[i].begin, spans[i].end - spans[i].begin), scratch, true))
-      throw std::runtime_error("the result document's value does not read back");
-    return &scratch;
-  };
   JsonValue scratch;
+  auto container = [&](std::string_view text) -> const JsonValue& {
+    scratch = JsonValue{};
+    if (!io::parse_json_tree_fast(text, scratch, true))
+      throw std::runtime_error("the result document's value does not read back");
+    return scratch;
+  };
+  // Rows of one run mostly share their strategies: the last few cells are kept by the text they came from.
+  struct Kept {
+    std::string text, cell;
+  };
+  thread_local std::array<Kept, 4> kept;
+  thread_local std::size_t next_kept = 0;
+  auto strategy_cell = [&](std::string_view text) {
+    for (const auto& c : kept)
+      if (!c.text.empty() && c.text == text) return out += c.cell, void();
+    std::string cell;  // kept only once made: a throw leaves the slots as they were
+    put_text(cell, strategy_text(&container(text)));
+    out += cell;
+    Kept& c = kept[next_kept++ % kept.size()];
+    c.text = text;
+    c.cell = std::move(cell);
+  };
+  char number[24];
   for (std::size_t k = 0; k < results; ++k) {
-    out += fmt::format("{},{},", line, k);
+    out.append(number, std::to_chars(number, number + sizeof number, line).ptr);
+    out += ',';
+    out.append(number, std::to_chars(number, number + sizeof number, k).ptr);
+    out += ',';
     for (std::size_t c = 0; c < columns; ++c)
       if (result_columns()[c].of_document) out += ',', cell(k, c);
     out += ',';
-    put_text(out, strategy_text(container(k, strategy, scratch)));
+    if (const auto text = text_of(k, strategy)) strategy_cell(*text);
     out += ',';
     cell(k, regime);
     for (std::size_t c = 0; c < columns; ++c)
       if (!result_columns()[c].of_document) out += ',', cell(k, c);
-    std::string joined;
-    if (const JsonValue* w = container(k, warnings, scratch); w && w->is(JsonValue::Type::array))
-      for (const auto& item : w->items) joined += (joined.empty() ? "" : " | ") + item.text;
     out += ',';
-    put_text(out, joined);
+    if (const auto text = text_of(k, warnings); text && *text != "[]") {
+      std::string joined;
+      if (const JsonValue& w = container(*text); w.is(JsonValue::Type::array))
+        for (const auto& item : w.items) joined += (joined.empty() ? "" : " | ") + item.text;
+      put_text(out, joined);
+    }
     out += '\n';
   }
   return out;

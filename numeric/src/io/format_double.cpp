@@ -60,25 +60,29 @@ constexpr u64 kTen16 = 10'000'000'000'000'000ULL, kTen17 = 100'000'000'000'000'0
 
 char* fallback(char* out, double x) { return std::to_chars(out, out + 24, x, std::chars_format::general, 17).ptr; }
 
+// The eight decimal digits of v < 10^8 as ASCII, most significant first, by arithmetic on lanes of one
+// 64-bit word (no loop, no table): two lanes of four digits, four of two, eight of one. Each lane's
+// quotient by 100 (by 10) is its product by 10486 / 2^20 (by 103 / 2^10), exact below 10^4 (below 179).
+void eight_digits(char* out, std::uint32_t v) {
+  const u64 x = v;
+  const u64 halves = x / 10000 | (x % 10000) << 32;  // abcd, efgh
+  const u64 high = (halves * 10486 >> 20) & 0x0000007f0000007fULL;  // ab, ef
+  const u64 pairs = (halves - 100 * high) << 16 | high;  // ab, cd, ef, gh in 16-bit lanes
+  const u64 tens = (pairs * 103 >> 10) & 0x000f000f000f000fULL;
+  const u64 digits = tens | (pairs - 10 * tens) << 8;  // a, b, ..., h in bytes, least significant first
+  const u64 ascii = digits + 0x3030303030303030ULL;
+  static_assert(std::endian::native == std::endian::little);
+  std::memcpy(out, &ascii, 8);
+}
+
 // printf's %g at precision 17 of N·10^(k-16), 10^16 ≤ N < 10^17: fixed notation when -4 ≤ k < 17,
 // exponential otherwise; trailing zeros and a bare point dropped.
 char* write_general(char* out, u64 n, int k) {
-  static constexpr char kPairs[] =
-      "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
-      "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
-      "8081828384858687888990919293949596979899";
   char digits[17];
-  // Two digits a division, in 32-bit halves: the eight low digits, then the nine high ones.
-  auto pairs = [&](std::uint32_t v, int last, int count) {
-    for (int i = 0; i < count; ++i, last -= 2) {
-      std::memcpy(digits + last - 1, kPairs + 2 * (v % 100), 2);
-      v /= 100;
-    }
-    return v;
-  };
-  const auto high = static_cast<std::uint32_t>(n / 100'000'000), low = static_cast<std::uint32_t>(n % 100'000'000);
-  pairs(low, 16, 4);
-  digits[0] = static_cast<char>('0' + pairs(high, 8, 4));
+  const u64 high = n / 100'000'000;  // nine digits, the first not zero
+  digits[0] = static_cast<char>('0' + high / 100'000'000);
+  eight_digits(digits + 1, static_cast<std::uint32_t>(high % 100'000'000));
+  eight_digits(digits + 9, static_cast<std::uint32_t>(n % 100'000'000));
   int len = 17;
   while (len > 1 && digits[len - 1] == '0') --len;
   if (k < -4 || k >= 17) {

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "impact3d/io/json_tree.hpp"
+
 namespace impact3d::io {
 
 JsonPick::JsonPick(const std::vector<JsonPath>& paths, bool only_picked) : nodes_(1), only_picked_(only_picked) {
@@ -36,7 +38,7 @@ JsonPick::JsonPick(const std::vector<JsonPath>& paths, bool only_picked) : nodes
 int JsonPick::member(int node, std::string_view key) const {
   if (node == kNone) return kNone;
   for (const auto& [k, id] : nodes_[static_cast<std::size_t>(node)].members)
-    if (k == key) return id;
+    if (same_key(k, key)) return id;
   return kNone;
 }
 

@@ -119,7 +119,9 @@ class Reader {
     const std::string* unknown = nullptr;
     for (const auto& k : v.keys) {
       if (!k.empty() && k[0] == '_') continue;  // comments and private extensions
-      if (std::find(allowed.begin(), allowed.end(), k) == allowed.end() && (!unknown || k < *unknown)) unknown = &k;
+      if (std::none_of(allowed.begin(), allowed.end(), [&](std::string_view a) { return same_key(a, k); }) &&
+          (!unknown || k < *unknown))
+        unknown = &k;
     }
     if (unknown) fail(Where(at, *unknown), "unknown key (keys starting with '_' are ignored)");
     return v;

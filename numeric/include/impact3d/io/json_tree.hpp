@@ -8,6 +8,12 @@
 
 namespace impact3d::io {
 
+// Key equality for the lookups readers and writers make by the dozen per document: lengths, then the
+// first and last bytes settle most pairs before any memcmp.
+inline bool same_key(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && (a.empty() || (a.front() == b.front() && a.back() == b.back())) && a == b;
+}
+
 struct JsonValue {
   enum class Type : unsigned char { null, boolean, number, string, array, object };
   Type type = Type::null;
@@ -21,7 +27,7 @@ struct JsonValue {
   std::size_t size() const { return items.size(); }
   const JsonValue* find(std::string_view key) const {
     for (std::size_t i = 0; i < keys.size(); ++i)
-      if (keys[i] == key) return &items[i];
+      if (same_key(keys[i], key)) return &items[i];
     return nullptr;
   }
 };

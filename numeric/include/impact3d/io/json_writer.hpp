@@ -3,6 +3,7 @@
 // JSON has no NaN, and the solution's warnings say which result is not finite (precision_warnings.hpp).
 #pragma once
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -19,7 +20,7 @@ class JsonWriter {
   // `pick`, when given, records where the values it names are written (json_pick.hpp).
   explicit JsonWriter(bool one_line = false, JsonPick* pick = nullptr)
       : one_line_(one_line), pick_(pick), only_picked_(pick && pick->only_picked()) {
-    out_.reserve(4096);
+    out_.reserve(reserve_hint());
   }
   void begin_object() { open('{'); }
   void end_object() { close('}'); }
@@ -28,6 +29,11 @@ class JsonWriter {
   JsonWriter& key(std::string_view k) {
     key_begin_ = out_.size();
     if (pick_) next_ = pick_->member(frames_.empty() ? JsonPick::kNone : frames_.back().node, k);
+    if (only_picked_ && whole_ == 0) {
+      // Outside a picked container no key is read back: a span starts at its value.
+      pending_key_ = true;
+      return *this;
+    }
     if (one_line_ && !pending_key_ && !has_items_.empty() && k.size() <= kShortKey && plain(k)) {
       // The keys the program writes, with the separator before them: one append, no escaping.
       char buf[kShortKey + 6];
@@ -46,6 +52,14 @@ class JsonWriter {
     }
     pending_key_ = true;
     return *this;
+  }
+  // After key(): true when the writer writes only picked values and nothing under this key is picked.
+  // The key is then taken back, and the caller writes no value for it (a section it need not compute).
+  bool unpicked() {
+    if (!only_picked_ || whole_ > 0 || next_ != JsonPick::kNone) return false;
+    out_.resize(key_begin_);
+    pending_key_ = false;
+    return true;
   }
   void raw(std::string_view number_text) { value(finite(number_text)); }
   // A number whose text `format(std::string&)` appends in place, so that no string is made per number.
@@ -107,6 +121,9 @@ class JsonWriter {
   }
   std::string str() && {
     out_ += '\n';
+    // The next document of this thread (a batch's next row) is likely as long as this one: room for
+    // it, and for the few bytes a batch row puts in front.
+    reserve_hint() = std::min<std::size_t>(out_.size() + 64, kMaxReserve);
     return std::move(out_);
   }
   std::string str() const& { return out_ + "\n"; }
@@ -212,6 +229,11 @@ class JsonWriter {
     return true;
   }
   static constexpr std::size_t kShortKey = 48;
+  static constexpr std::size_t kMaxReserve = std::size_t{1} << 20;
+  static std::size_t& reserve_hint() {
+    thread_local std::size_t bytes = 4096;
+    return bytes;
+  }
   void item() {
     if (pending_key_) return;
     if (!has_items_.empty()) {

@@ -128,22 +128,24 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   const auto& mo = s.momentum;
   const Scalar f_angular = f.impulse * f.length;
   auto residual = [&](JsonWriter& to, const Scalar& r) { to.number([&](std::string& out) { append_scalar(out, r, 3); }); };
-  w.key("momentum").begin_object();
-  w.key("linear").begin_object();
-  p.put_vec(w.key("before"), mo.linear_before_W, f.impulse);
-  p.put_vec(w.key("after"), mo.linear_after_W, f.impulse);
-  residual(w.key("residual_over_bound"), mo.linear_residual);
-  w.end_object();
-  w.key("angular_about_impulse_centre").begin_array();
-  for (int i = 0; i < 2; ++i) {
+  if (!w.key("momentum").unpicked()) {
     w.begin_object();
-    p.put_vec(w.key("before"), mo.angular_before_B[i], f_angular);
-    p.put_vec(w.key("after"), mo.angular_after_B[i], f_angular);
-    residual(w.key("residual_over_bound"), mo.angular_residual[i]);
+    w.key("linear").begin_object();
+    p.put_vec(w.key("before"), mo.linear_before_W, f.impulse);
+    p.put_vec(w.key("after"), mo.linear_after_W, f.impulse);
+    residual(w.key("residual_over_bound"), mo.linear_residual);
+    w.end_object();
+    w.key("angular_about_impulse_centre").begin_array();
+    for (int i = 0; i < 2; ++i) {
+      w.begin_object();
+      p.put_vec(w.key("before"), mo.angular_before_B[i], f_angular);
+      p.put_vec(w.key("after"), mo.angular_after_B[i], f_angular);
+      residual(w.key("residual_over_bound"), mo.angular_residual[i]);
+      w.end_object();
+    }
+    w.end_array();
     w.end_object();
   }
-  w.end_array();
-  w.end_object();
   w.key("rounding_bound").number([&](std::string& out) { append_scalar(out, s.rounding_bound, 3); });
   w.key("warnings").begin_array();
   for (const auto& warning : s.warnings) w.string(warning.text);
@@ -171,36 +173,40 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   w.key("units").string(units_name(c.units));
   w.key("precision").string(precision);
   w.key("engine").string(engine_name(a.engine));
-  w.key("coefficients").begin_object();
-  p.put(w.key("m_prime"), a.m_prime, f.mass);
-  w.key("K");
-  write_matrix(w, a.K, p);
-  p.put(w.key("det_K"), Scalar(a.K.determinant()));
-  p.put(w.key("condition_K"), a.kappa);
-  w.key("T").begin_array();
-  for (int i = 0; i < 2; ++i) write_matrix(w, a.T[i], p);
-  w.end_array();
-  w.end_object();
-  w.key("impulse_space").begin_object();
-  p.put_vec(w.key("max_energy_loss_impulse"), a.space.P_max_loss, f.impulse);
-  w.key("critical_impulse_line").begin_object();
-  p.put_vec(w.key("point"), a.space.P_max_loss, f.impulse);
-  p.put_vec(w.key("direction"), a.space.cil_direction, Scalar(1));
-  w.end_object();
-  w.key("planes").begin_object();
-  const char* names[3] = {"max_compression", "t_no_sliding", "z_no_sliding"};
-  for (int k = 0; k < 3; ++k) {
-    w.key(names[k]).begin_object();
-    p.put_vec(w.key("normal"), a.space.plane_normal.row(k).transpose(), Scalar(1));
-    p.put(w.key("offset"), a.space.plane_offset(k), f.impulse);
+  if (!w.key("coefficients").unpicked()) {
+    w.begin_object();
+    p.put(w.key("m_prime"), a.m_prime, f.mass);
+    w.key("K");
+    write_matrix(w, a.K, p);
+    p.put(w.key("det_K"), Scalar(a.K.determinant()));
+    p.put(w.key("condition_K"), a.kappa);
+    w.key("T").begin_array();
+    for (int i = 0; i < 2; ++i) write_matrix(w, a.T[i], p);
+    w.end_array();
     w.end_object();
   }
-  w.key("restitution").begin_object();
-  p.put_vec(w.key("normal"), a.space.plane_normal.row(0).transpose(), Scalar(1));
-  p.put(w.key("offset"), a.space.restitution_offset, f.impulse);
-  w.end_object();
-  w.end_object();
-  w.end_object();
+  if (!w.key("impulse_space").unpicked()) {
+    w.begin_object();
+    p.put_vec(w.key("max_energy_loss_impulse"), a.space.P_max_loss, f.impulse);
+    w.key("critical_impulse_line").begin_object();
+    p.put_vec(w.key("point"), a.space.P_max_loss, f.impulse);
+    p.put_vec(w.key("direction"), a.space.cil_direction, Scalar(1));
+    w.end_object();
+    w.key("planes").begin_object();
+    const char* names[3] = {"max_compression", "t_no_sliding", "z_no_sliding"};
+    for (int k = 0; k < 3; ++k) {
+      w.key(names[k]).begin_object();
+      p.put_vec(w.key("normal"), a.space.plane_normal.row(k).transpose(), Scalar(1));
+      p.put(w.key("offset"), a.space.plane_offset(k), f.impulse);
+      w.end_object();
+    }
+    w.key("restitution").begin_object();
+    p.put_vec(w.key("normal"), a.space.plane_normal.row(0).transpose(), Scalar(1));
+    p.put(w.key("offset"), a.space.restitution_offset, f.impulse);
+    w.end_object();
+    w.end_object();
+    w.end_object();
+  }
   w.key("results").begin_array();
   for (std::size_t k = 0; k < a.solutions.size(); ++k)
     write_solution(w, c.strategies[k], c.vehicles.data(), a.solutions[k], p, snap_zeros,
