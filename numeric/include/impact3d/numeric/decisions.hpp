@@ -119,6 +119,9 @@ class ImposeBranch {
 template <typename Scalar, typename = void>
 struct DecisionName {
   constexpr explicit DecisionName(const char*) {}
+  // Not trivial, as the recording guard's is not: a guard held only for its lifetime is then not an
+  // unused variable to clang, whatever the scalar.
+  constexpr ~DecisionName() {}
 };
 
 template <typename Scalar>

@@ -16,6 +16,7 @@
 #include <Eigen/LU>
 
 #include "impact3d/numeric/decisions.hpp"
+#include "impact3d/numeric/planar_norm.hpp"
 #include "impact3d/numeric/problem.hpp"
 
 namespace impact3d {
@@ -109,14 +110,13 @@ Line2<Scalar> restitution_trace(const Problem<Scalar>& p, int k, const Scalar& R
 template <typename Engine, typename Scalar>
 ContactPlaneFigure<Scalar> contact_plane_figure(const Problem<Scalar>& p) {
   using std::atan2;
-  using std::hypot;
   ContactPlaneFigure<Scalar> f;
   f.full_impact = Engine::full_impact(p, p.restitution);
   try {
     f.no_sliding = Engine::brach_impulse(p, std::optional<Scalar>(), std::optional<Scalar>(), "critical impulse line");
   } catch (const SolveError&) {
   }
-  f.gir = hypot(f.full_impact.y(), f.full_impact.z()) / f.full_impact.x();
+  f.gir = planar_norm(f.full_impact.y(), f.full_impact.z()) / f.full_impact.x();
   f.restitution_rhs = p.m_prime * (Scalar(1) + p.restitution) * p.V_ri.x();
   f.t_trace = restitution_trace(p, 1, f.restitution_rhs);
   f.z_trace = restitution_trace(p, 2, f.restitution_rhs);
@@ -151,13 +151,12 @@ struct SolutionPlaneFigure {
 template <typename Engine, typename Scalar>
 SolutionPlaneFigure<Scalar> solution_plane_figure(const Problem<Scalar>& p, const ImpulseSolution<Scalar>& s) {
   using std::atan2;
-  using std::hypot;
   SolutionPlaneFigure<Scalar> f;
   const Vec3<Scalar>& P = s.P_C;
   if (s.plane) {
     f.axes = *s.plane;
   } else {
-    const Scalar len = hypot(P.y(), P.z());
+    const Scalar len = planar_norm(P.y(), P.z());
     f.axes = len > Scalar(0) ? PlaneAxes<Scalar>{P.y() / len, P.z() / len} : PlaneAxes<Scalar>{Scalar(1), Scalar(0)};
   }
   f.angle_deg = s.plane_angle_deg ? *s.plane_angle_deg : degrees(Scalar(atan2(f.axes.s, f.axes.c)));

@@ -12,6 +12,7 @@
 
 #include "impact3d/numeric/decisions.hpp"
 #include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/planar_norm.hpp"
 #include "impact3d/numeric/reconstruction.hpp"
 #include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/strategy.hpp"
@@ -42,14 +43,13 @@ template <typename Scalar>
 BodyChange<Scalar> body_change(const RigidBody<Scalar>& before, const RigidBody<Scalar>& after) {
   using std::atan2;
   using std::floor;
-  using std::hypot;
   BodyChange<Scalar> c;
   c.dv_W = after.v_W - before.v_W;
   if constexpr (!is_exact_v<Scalar>) {  // |Delta-V| and its angle are not rational
     c.dv = c.dv_W.norm();
     const Vec3<Scalar> dv_B = before.R_WB.transpose() * c.dv_W;
     const DecisionName<Scalar> name(decision_names::pdof);
-    if (rounding::beyond_rounding(Scalar(hypot(dv_B.x(), dv_B.y())), rounding::pdof_roundoff(c.dv))) {
+    if (rounding::beyond_rounding(Scalar(planar_norm(dv_B.x(), dv_B.y())), rounding::pdof_roundoff(c.dv))) {
       // The force is along Delta-V; it comes from the side opposite to it.
       Scalar deg = degrees(Scalar(atan2(dv_B.y(), Scalar(-dv_B.x()))));
       if (deg < Scalar(0)) deg += Scalar(360);
@@ -123,7 +123,6 @@ template <typename Scalar>
 Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scalar>& imp, const Scalar& kappa) {
   using std::abs;
   using std::atan2;
-  using std::hypot;
   Solution<Scalar> out;
   out.impulse = imp;
   out.warnings = imp.warnings;
@@ -142,8 +141,8 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
 
   out.restitution_effective = -out.V_rf.x() / out.V_ri.x();
   if constexpr (!is_exact_v<Scalar>) {  // sliding speeds and the swerve are not rational
-    out.sliding_before = hypot(out.V_ri.y(), out.V_ri.z());
-    out.sliding_after = hypot(out.V_rf.y(), out.V_rf.z());
+    out.sliding_before = planar_norm(out.V_ri.y(), out.V_ri.z());
+    out.sliding_after = planar_norm(out.V_rf.y(), out.V_rf.z());
     const DecisionName<Scalar> name(decision_names::swerve);
     if (rounding::beyond_rounding(out.sliding_before, tol)) {
       const Scalar cross = out.V_ri.y() * out.V_rf.z() - out.V_ri.z() * out.V_rf.y();

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "impact3d/numeric/planar_norm.hpp"
 #include "impact3d/numeric/post_impact.hpp"
 #include "impact3d/numeric/rounding.hpp"
 
@@ -59,7 +60,7 @@ template <typename Scalar>
 void flag_width(Solution<Scalar>& s, const Scalar& kappa) {
   s.rounding_bound = relative_radius(s.impulse.P_C);
   if (s.rounding_bound.finite() && to_double(s.rounding_bound) <= rounding::kTrustedFraction) return;
-  const Scalar obliquity = hypot(s.V_ri.y(), s.V_ri.z()) / s.V_ri.x();
+  const Scalar obliquity = planar_norm(s.V_ri.y(), s.V_ri.z()) / s.V_ri.x();
   std::ostringstream text;
   text.precision(3);
   text << "wide enclosure: the impulse is certified only to a relative radius of " << to_double(s.rounding_bound)

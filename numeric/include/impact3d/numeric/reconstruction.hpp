@@ -11,6 +11,7 @@
 
 #include "impact3d/numeric/kinematics.hpp"
 #include "impact3d/numeric/decisions.hpp"
+#include "impact3d/numeric/planar_norm.hpp"
 #include "impact3d/numeric/rounding.hpp"
 
 namespace impact3d {
@@ -34,12 +35,11 @@ VehicleMotion<Scalar> vehicle_motion(const RigidBody<Scalar>& before, const Rigi
   m.yaw_rate_after = (after.R_WB * after.w_B).z();
   if constexpr (!is_exact_v<Scalar>) {
     using std::atan2;
-    using std::hypot;
     m.speed_after = after.v_W.norm();
     // v after = v + P/m, a sum of terms of at most |v| and |Delta-V|.
     const Scalar noise = rounding::arithmetic_roundoff(Scalar(before.v_W.norm() + m.dv_B.norm()));
     const DecisionName<Scalar> name(decision_names::heading_after);
-    if (rounding::beyond_rounding(Scalar(hypot(after.v_W.x(), after.v_W.y())), noise))
+    if (rounding::beyond_rounding(Scalar(planar_norm(after.v_W.x(), after.v_W.y())), noise))
       m.heading_after_deg = degrees(Scalar(atan2(after.v_W.y(), after.v_W.x())));
   }
   return m;

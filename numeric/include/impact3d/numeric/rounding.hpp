@@ -38,6 +38,7 @@
 
 #include "impact3d/numeric/exact.hpp"
 #include "impact3d/numeric/kinematics.hpp"
+#include "impact3d/numeric/planar_norm.hpp"
 #include "impact3d/numeric/scalars.hpp"
 
 namespace impact3d::rounding {
@@ -180,8 +181,7 @@ Scalar amplification_bound(const Scene<Scalar>& s, const Scalar& V_rn, const Sca
 // carry it besides the amplification.
 template <typename Scalar>
 Scalar quotient_factor(const Vec3<Scalar>& V_ri) {
-  using std::hypot;
-  return Scalar(1) + hypot(V_ri.y(), V_ri.z()) / V_ri.x();
+  return Scalar(1) + planar_norm(V_ri.y(), V_ri.z()) / V_ri.x();
 }
 
 // The relative bound of an impulse at this precision: kResultRoundings * eps * amplification. With
@@ -257,9 +257,9 @@ Scalar energy_roundoff(const Scalar& kappa, const Scalar& energy_before) {
 // A quantity formed by a short, fixed sequence of products and sums with no solve (a vector turned by a
 // rotation; the entries of K from J^-1, the lever arms and the rotations) is off by at most
 // gamma_n = n eps / (1 - n eps) of the sum of its terms' magnitudes, n the operations on its longest
-// path: three for a component of a rotated 3-vector (and one more for a hypot), under a dozen for an
-// entry of K. 16 covers them with room; structural zeros and symmetries of such a quantity hold to this,
-// relative to its size.
+// path: three for a component of a rotated 3-vector (and one more for a planar length, planar_norm),
+// under a dozen for an entry of K. 16 covers them with room; structural zeros and symmetries of such a
+// quantity hold to this, relative to its size.
 inline constexpr double kArithmeticRoundings = 16;
 
 // kArithmeticRoundings * eps * scale.

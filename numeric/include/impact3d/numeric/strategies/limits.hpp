@@ -7,6 +7,7 @@
 #include <string>
 
 #include "impact3d/numeric/exact.hpp"
+#include "impact3d/numeric/planar_norm.hpp"
 #include "impact3d/numeric/problem.hpp"
 #include "impact3d/numeric/rounding.hpp"
 #include "impact3d/numeric/strategy.hpp"
@@ -26,8 +27,7 @@ Scalar plane_length(const Scalar& a, const Scalar& b) {
   if constexpr (is_exact_v<Scalar>) {
     return exact_sqrt(Scalar(a * a + b * b), "the direction of the solution plane (|(P_t, P_z)| or |(V_rt, V_rz)|)");
   } else {
-    using std::hypot;
-    return hypot(a, b);
+    return planar_norm(a, b);
   }
 }
 

@@ -1,0 +1,24 @@
+// |(a, b)|, the length of a vector in a plane, for the few each solve takes. At double, while neither
+// square can overflow and the larger cannot underflow (the larger magnitude in [2^-450, 2^500]), it is
+// the root of the sum of squares: four roundings, each of u = eps/2, put it within eps (1 + eps/4) of
+// the exact length (tests/check_planar_norm.cpp), as glibc's hypot is within one ulp, at a fraction
+// of its cost (a tenth of a lean pc-crash solve, BENCHMARKS.md). Outside that range, and at every
+// other scalar, it is std::hypot, with its scaling and its infinities and NaN.
+#pragma once
+
+#include <cmath>
+#include <type_traits>
+
+namespace impact3d {
+
+template <typename Scalar>
+Scalar planar_norm(const Scalar& a, const Scalar& b) {
+  if constexpr (std::is_same_v<Scalar, double>) {
+    const double larger = std::fmax(std::fabs(a), std::fabs(b));  // NaN only when both are
+    if (larger >= 0x1p-450 && larger <= 0x1p500) return std::sqrt(a * a + b * b);
+  }
+  using std::hypot;
+  return hypot(a, b);
+}
+
+}  // namespace impact3d
