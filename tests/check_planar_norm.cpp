@@ -6,6 +6,8 @@
 #include <limits>
 #include <random>
 
+#include "impact3d/numeric/autodiff.hpp"
+#include "impact3d/numeric/ball.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 #include "impact3d/numeric/planar_norm.hpp"
 #include "support.hpp"
@@ -36,10 +38,13 @@ double random_double(std::mt19937_64& g, int min_exponent, int max_exponent) {
 TEST_CASE("planar_norm is within eps of the exact length over the exponent range", "[planar_norm]") {
   // Inside the root's range: a*a and b*b round once each (u = eps/2 relative) and so, both being
   // positive, does their sum: (1 + u)^2 at most; the root halves that to 1 + u and rounds once more,
-  // (1 + u)^2 = 1 + 2u + u^2 in all, eps (1 + eps / 4). Outside the range glibc's hypot, documented
-  // under one ulp: under 2u relative. The 50-digit reference adds 1e-50. Bound: eps (1 + eps).
+  // (1 + u)^2 = 1 + 2u + u^2 in all, eps (1 + eps / 4); a smaller square that underflows is under 2^-120
+  // of the sum. Outside the range glibc's hypot, listed at one ulp: at most 2u relative. The 50-digit
+  // reference adds 1e-50. Bound: eps (1 + eps). It cannot tell the root's bound from one ulp; it does
+  // catch a range limit in the wrong place (an overflow, an underflow to zero or to a subnormal's few
+  // digits), a lost NaN, and an argument dropped.
   std::mt19937_64 g(29);
-  int checked = 0, by_root = 0;
+  int checked = 0, by_root = 0, by_hypot = 0;
   double worst = 0;
   for (int k = 0; k < 20000; ++k) {
     // Pairs of like and of far-apart magnitudes, from subnormal to near the largest double; the larger
@@ -48,13 +53,16 @@ TEST_CASE("planar_norm is within eps of the exact length over the exponent range
     const double b = k % 2 ? random_double(g, -1074, 1022) : std::ldexp(a, int(g() % 61) - 30);
     const double larger = std::fmax(std::fabs(a), std::fabs(b));
     if (larger >= 0x1p-450 && larger <= 0x1p500) ++by_root;
+    else ++by_hypot;
     const double e = relative_error(a, b);
     worst = std::fmax(worst, e);
     CHECK(e <= eps * (1 + eps));
     ++checked;
   }
   CHECK(checked == 20000);
-  CHECK(by_root > 5000);  // the root's range is about half the exponents drawn
+  // The root's range is about half the exponents drawn, and both sides see thousands of pairs.
+  CHECK(by_root > 5000);
+  CHECK(by_hypot > 5000);
   INFO("worst relative error " << worst / eps << " eps");
   CHECK(worst <= eps * (1 + eps));
 }
@@ -82,8 +90,23 @@ TEST_CASE("planar_norm at the ends of the root's range and beyond", "[planar_nor
   CHECK(std::isnan(planar_norm(nan, nan)));
 }
 
-TEST_CASE("planar_norm at other scalars is hypot", "[planar_norm]") {
+TEST_CASE("planar_norm at other scalars is their own hypot", "[planar_norm]") {
   const mp::float50 a("0.3"), b("-1.7");
   CHECK(planar_norm(a, b) == hypot(a, b));
   CHECK(planar_norm(0.3L, -1.7L) == std::hypot(0.3L, -1.7L));
+  // A ball's (ADL in impact3d): it encloses the exact length of its arguments, 5 for (3, 4) and
+  // sqrt(0.09 + 2.89) for the decimals 0.3 and -1.7.
+  const Ball five = planar_norm(Ball(3.0), Ball(-4.0));
+  CHECK((five - Ball(5.0)).contains_zero());
+  const Ball apart = planar_norm(Ball("0.3"), Ball("-1.7")) - sqrt(Ball("2.98"));
+  CHECK(apart.contains_zero());
+  CHECK(apart.upper_double() < 1e-60);  // 256-bit balls: radii near 1e-76
+  // A dual's (ADL in Eigen): the double path's value, and the derivatives (a, b) / |(a, b)|.
+  Dual x(3.0), y(-4.0);
+  x.derivatives() = Dual::DerType::Unit(0);
+  y.derivatives() = Dual::DerType::Unit(1);
+  const Dual h = planar_norm(x, y);
+  CHECK(h.value() == planar_norm(3.0, -4.0));
+  CHECK(h.derivatives()[0] == 0.6);  // 3/5 and -4/5, each one correctly rounded division
+  CHECK(h.derivatives()[1] == -0.8);
 }

@@ -148,11 +148,19 @@ void Ball::append_text(std::string& out, int digits) const {
     // Fewer digits than asked: how far from the printed m the ball reaches, rounded up, so that
     // m(+-r) is itself an enclosure.
     const Ball printed(m);
-    out += "(+-" + arf_text(arb_midref(hull(abs(printed - lo), abs(hi - printed)).upper().x_), 2, MPFR_RNDU) + ")";
+    // Appended piece by piece, not "(+-" + a temporary: GCC 12's false -Wrestrict (PR 105329).
+    out += "(+-";
+    out += arf_text(arb_midref(hull(abs(printed - lo), abs(hi - printed)).upper().x_), 2, MPFR_RNDU);
+    out += ')';
     found = true;
   }
-  if (!found)  // no digit shared: the bounds themselves, rounded outward
-    out += "[" + arf_text(arb_midref(lo.x_), 2, MPFR_RNDD) + ", " + arf_text(arb_midref(hi.x_), 2, MPFR_RNDU) + "]";
+  if (!found) {  // no digit shared: the bounds themselves, rounded outward
+    out += '[';
+    out += arf_text(arb_midref(lo.x_), 2, MPFR_RNDD);
+    out += ", ";
+    out += arf_text(arb_midref(hi.x_), 2, MPFR_RNDU);
+    out += ']';
+  }
 }
 
 double Ball::upper_double() const {

@@ -27,7 +27,10 @@ const std::map<std::string, std::string>& latex_names() {
         n[std::string("p") + k + std::to_string(i)] = std::string(k) + "'_" + std::to_string(i);
       }
     for (const char* f : {"A", "B", "C"}) n[f] = f;
-    for (int i = 1; i <= 8; ++i) n["f" + std::to_string(i)] = "f_" + std::to_string(i);
+    for (int i = 1; i <= 8; ++i) {
+      const std::string d = std::to_string(i);  // not "f_" + a temporary: GCC 12's false -Wrestrict (PR 105329)
+      n["f" + d] = "f_" + d;
+    }
     for (int i = 1; i <= 2; ++i) {
       const std::string s = std::to_string(i);
       n["m" + s] = "m_" + s;

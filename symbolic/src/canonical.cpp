@@ -32,7 +32,11 @@ int Dag::number(const numeric& v) {
   Node n;
   n.kind = Node::Kind::number;
   n.value = v;
-  n.key = "#" + numeric_text(v);
+  // Built up in a new string, not "#" + a temporary nor "#" assigned: GCC 12's false -Wrestrict (PR 105329).
+  const std::string text = numeric_text(v);
+  std::string key(1, '#');
+  key += text;
+  n.key = std::move(key);
   return add_node(std::move(n));
 }
 

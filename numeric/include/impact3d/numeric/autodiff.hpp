@@ -13,6 +13,7 @@
 #include <limits>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "impact3d/numeric/planar_norm.hpp"
 #include "impact3d/numeric/types.hpp"
 
 namespace impact3d {
@@ -31,10 +32,11 @@ struct DualTraits<Dual> {
 
 namespace Eigen {
 
-// sqrt(a^2 + b^2) without overflow. At a = b = 0 it has no derivative unless neither moves: NaN there.
+// sqrt(a^2 + b^2) without overflow, its value the double path's (planar_norm). At a = b = 0 it has no
+// derivative unless neither moves: NaN there.
 inline impact3d::Dual hypot(const impact3d::Dual& a, const impact3d::Dual& b) {
   using D = impact3d::Dual::DerType;
-  const double h = std::hypot(a.value(), b.value());
+  const double h = impact3d::planar_norm(a.value(), b.value());
   if (h > 0) return impact3d::Dual(h, D((a.value() / h) * a.derivatives() + (b.value() / h) * b.derivatives()));
   if (a.derivatives().isZero(0) && b.derivatives().isZero(0)) return impact3d::Dual(h, D::Zero());
   return impact3d::Dual(h, D::Constant(std::numeric_limits<double>::quiet_NaN()));
