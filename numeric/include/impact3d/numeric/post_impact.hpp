@@ -49,7 +49,7 @@ BodyChange<Scalar> body_change(const RigidBody<Scalar>& before, const RigidBody<
     c.dv = c.dv_W.norm();
     const Vec3<Scalar> dv_B = before.R_WB.transpose() * c.dv_W;
     const DecisionName<Scalar> name(decision_names::pdof);
-    if (rounding::beyond_rounding(Scalar(planar_norm(dv_B.x(), dv_B.y())), rounding::pdof_roundoff(c.dv))) {
+    if (rounding::beyond_rounding(planar_norm(dv_B.x(), dv_B.y()), rounding::pdof_roundoff(c.dv))) {
       // The force is along Delta-V; it comes from the side opposite to it.
       Scalar deg = degrees(Scalar(atan2(dv_B.y(), Scalar(-dv_B.x()))));
       if (deg < Scalar(0)) deg += Scalar(360);

@@ -39,7 +39,7 @@ VehicleMotion<Scalar> vehicle_motion(const RigidBody<Scalar>& before, const Rigi
     // v after = v + P/m, a sum of terms of at most |v| and |Delta-V|.
     const Scalar noise = rounding::arithmetic_roundoff(Scalar(before.v_W.norm() + m.dv_B.norm()));
     const DecisionName<Scalar> name(decision_names::heading_after);
-    if (rounding::beyond_rounding(Scalar(planar_norm(after.v_W.x(), after.v_W.y())), noise))
+    if (rounding::beyond_rounding(planar_norm(after.v_W.x(), after.v_W.y()), noise))
       m.heading_after_deg = degrees(Scalar(atan2(after.v_W.y(), after.v_W.x())));
   }
   return m;
