@@ -2,9 +2,12 @@
 // JSON, converting the decimals to a scene, K, the strategies and their consequences, and printing.
 #include <benchmark/benchmark.h>
 
+#include <charconv>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
+#include "impact3d/io/format_double.hpp"
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/numeric/certified.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
@@ -85,6 +88,44 @@ void result_json(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(io::result_json(spec(), a, "p"));
 }
 
+// The 17 digits of each number in Figure 8's result document (what a batch row prints), one number per
+// item, against std::to_chars at precision 17 (the same text).
+const std::vector<double>& printed_numbers() {
+  static const std::vector<double> numbers = [] {
+    const std::string doc = io::result_json(spec(), analyze(io::to_scene<double>(spec()), io::to_strategies<double>(spec())), "p");
+    std::vector<double> v;
+    for (std::size_t i = 0; i < doc.size();) {
+      const char c = doc[i];
+      const bool starts = (c == '-' || (c >= '0' && c <= '9')) && i > 0 && (doc[i - 1] == ' ' || doc[i - 1] == '[');
+      double x;
+      const auto r = std::from_chars(doc.data() + i, doc.data() + doc.size(), x);
+      if (starts && r.ec == std::errc()) {
+        v.push_back(x);
+        i = static_cast<std::size_t>(r.ptr - doc.data());
+      } else {
+        ++i;
+      }
+    }
+    return v;
+  }();
+  return numbers;
+}
+
+void format_g17(benchmark::State& state) {
+  char buf[32];
+  for (auto _ : state)
+    for (const double x : printed_numbers()) benchmark::DoNotOptimize(io::format_g17(buf, x));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(printed_numbers().size()));
+}
+
+void to_chars_17(benchmark::State& state) {
+  char buf[32];
+  for (auto _ : state)
+    for (const double x : printed_numbers())
+      benchmark::DoNotOptimize(std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, 17).ptr);
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(printed_numbers().size()));
+}
+
 }  // namespace
 
 BENCHMARK(read_case);
@@ -108,5 +149,7 @@ BENCHMARK(solve_exact);
 BENCHMARK(solve_certified)->Arg(128)->Arg(256)->Arg(512);
 BENCHMARK(result_json<double>);
 BENCHMARK(result_json<mp::float100>);
+BENCHMARK(format_g17);
+BENCHMARK(to_chars_17);
 
 BENCHMARK_MAIN();

@@ -54,7 +54,8 @@ TEST_CASE("scalar_to_text of double and long double is the classic stream's text
 // (io/format_double.hpp); it must give std::to_chars's text everywhere. Beside random bit patterns: every
 // binade's ends, the neighbours of each power of ten (where the digit count changes), exact ties at the
 // 18th digit (n + 0.25 and n + 0.75 for 16-digit n below 2^51, where quarters are representable; rounded
-// to even), and scaled random integers.
+// to even; below 2^50 the guess of the decimal exponent is one short, and the 18-digit product decides),
+// and scaled random integers.
 TEST_CASE("format_g17 is std::to_chars at 17 digits", "[io]") {
   std::mt19937_64 g(17);
   int compared = 0, mismatched = 0;

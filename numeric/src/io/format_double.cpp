@@ -2,7 +2,9 @@
 // 17 digits before the point, is computed as f × c · 2^(e+s) with c·2^s the 128-bit truncation of 10^q
 // (c ≥ 2^127, exact below it or short by less than one unit). The 192-bit product's integer part is the
 // digits; its next 64 bits, short of the true fraction by less than two units of their last place, say
-// which way to round unless the fraction is within that of one half, where std::to_chars decides.
+// which way to round unless the fraction is within that of one half, where std::to_chars decides. The
+// guess of k from the binary exponent is right or one short; one short, the product has 18 digits and the
+// last of them rounds the 17, where a second product used to be taken.
 #include "impact3d/io/format_double.hpp"
 
 #include <array>
@@ -60,61 +62,69 @@ constexpr u64 kTen16 = 10'000'000'000'000'000ULL, kTen17 = 100'000'000'000'000'0
 
 char* fallback(char* out, double x) { return std::to_chars(out, out + 24, x, std::chars_format::general, 17).ptr; }
 
-// The eight decimal digits of v < 10^8 as ASCII, most significant first, by arithmetic on lanes of one
-// 64-bit word (no loop, no table): two lanes of four digits, four of two, eight of one. Each lane's
-// quotient by 100 (by 10) is its product by 10486 / 2^20 (by 103 / 2^10), exact below 10^4 (below 179).
-void eight_digits(char* out, std::uint32_t v) {
+// The eight decimal digits of v < 10^8, one a byte, most significant in the lowest byte, by arithmetic
+// on lanes of one 64-bit word (no loop, no table): two lanes of four digits, four of two, eight of one.
+// Each lane's quotient by 100 (by 10) is its product by 10486 / 2^20 (by 103 / 2^10), exact below 10^4
+// (below 179).
+u64 eight_digits(std::uint32_t v) {
   const u64 x = v;
   const u64 halves = x / 10000 | (x % 10000) << 32;  // abcd, efgh
   const u64 high = (halves * 10486 >> 20) & 0x0000007f0000007fULL;  // ab, ef
   const u64 pairs = (halves - 100 * high) << 16 | high;  // ab, cd, ef, gh in 16-bit lanes
   const u64 tens = (pairs * 103 >> 10) & 0x000f000f000f000fULL;
-  const u64 digits = tens | (pairs - 10 * tens) << 8;  // a, b, ..., h in bytes, least significant first
-  const u64 ascii = digits + 0x3030303030303030ULL;
-  static_assert(std::endian::native == std::endian::little);
-  std::memcpy(out, &ascii, 8);
+  return tens | (pairs - 10 * tens) << 8;  // a, b, ..., h in bytes, least significant first
 }
 
-// printf's %g at precision 17 of N·10^(k-16), 10^16 ≤ N < 10^17: fixed notation when -4 ≤ k < 17,
-// exponential otherwise; trailing zeros and a bare point dropped.
-char* write_general(char* out, u64 n, int k) {
-  char digits[17];
+constexpr u64 kAscii = 0x3030303030303030ULL;
+
+// printf's %g at precision 17 of N·10^(k-16), 10^16 ≤ N < 10^17, sign first when negative: fixed
+// notation when -4 ≤ k < 17, exponential otherwise; trailing zeros and a bare point dropped. The text is
+// stored from registers in pieces of fixed width, later pieces over earlier ones (none is read back, so
+// no load waits on a narrower store); with the sign they reach at most 27 bytes from `out`.
+char* write_general(char* out, bool negative, u64 n, int k) {
+  static_assert(std::endian::native == std::endian::little);
   const u64 high = n / 100'000'000;  // nine digits, the first not zero
-  digits[0] = static_cast<char>('0' + high / 100'000'000);
-  eight_digits(digits + 1, static_cast<std::uint32_t>(high % 100'000'000));
-  eight_digits(digits + 9, static_cast<std::uint32_t>(n % 100'000'000));
-  int len = 17;
-  while (len > 1 && digits[len - 1] == '0') --len;
+  const u64 a = eight_digits(static_cast<std::uint32_t>(high % 100'000'000));
+  const u64 b = eight_digits(static_cast<std::uint32_t>(n % 100'000'000));
+  // Trailing zero digits are the zero bytes at the top of b, then of a.
+  const int zeros = b != 0 ? std::countl_zero(b) / 8 : 8 + (a != 0 ? std::countl_zero(a) / 8 : 8);
+  const int len = 17 - zeros;
+  const char first = static_cast<char>('0' + high / 100'000'000);
+  const u128 rest = (a + kAscii) | static_cast<u128>(b + kAscii) << 64;  // digits 1 to 16
+  *out = '-';
+  char* p = out + negative;
   if (k < -4 || k >= 17) {
-    *out++ = digits[0];
-    if (len > 1) {
-      *out++ = '.';
-      std::memcpy(out, digits + 1, static_cast<std::size_t>(len - 1));
-      out += len - 1;
-    }
-    *out++ = 'e';
-    *out++ = k < 0 ? '-' : '+';
-    const int a = k < 0 ? -k : k;
-    if (a >= 100) *out++ = static_cast<char>('0' + a / 100);
-    *out++ = static_cast<char>('0' + a / 10 % 10);
-    *out++ = static_cast<char>('0' + a % 10);
-  } else if (k < 0) {
-    *out++ = '0';
-    *out++ = '.';
-    for (int i = -1; i > k; --i) *out++ = '0';
-    std::memcpy(out, digits, static_cast<std::size_t>(len));
-    out += len;
-  } else {
-    const int whole = k + 1;
-    std::memcpy(out, digits, static_cast<std::size_t>(whole));
-    out += whole;
-    if (len > whole) {
-      *out++ = '.';
-      std::memcpy(out, digits + whole, static_cast<std::size_t>(len - whole));
-      out += len - whole;
-    }
+    p[0] = first;
+    p[1] = '.';
+    std::memcpy(p + 2, &rest, 16);
+    p += len > 1 ? len + 1 : 1;
+    const unsigned e = static_cast<unsigned>(k < 0 ? -k : k);
+    const u64 exponent = e >= 100 ? (u64{'0' + e % 10} << 32 | u64{'0' + e / 10 % 10} << 24 | u64{'0' + e / 100} << 16)
+                                  : (u64{'0' + e % 10} << 24 | u64{'0' + e / 10} << 16);
+    const u64 text = exponent | u64{static_cast<unsigned char>(k < 0 ? '-' : '+')} << 8 | 'e';
+    std::memcpy(p, &text, 8);
+    return p + (e >= 100 ? 5 : 4);
   }
-  return out;
+  if (k < 0) {
+    std::memcpy(p, "0.000000", 8);
+    p += 1 - k;  // "0." and -k-1 zeros
+    p[0] = first;
+    std::memcpy(p + 1, &rest, 16);
+    return p + len;
+  }
+  const int whole = k + 1;
+  p[0] = first;
+  std::memcpy(p + 1, &rest, 16);
+  if (len <= whole) return p + whole;
+  p[whole] = '.';
+  const u128 fraction = rest >> (8 * (whole - 1));  // digits whole to 16
+  if (whole <= 8) {
+    std::memcpy(p + whole + 1, &fraction, 16);
+  } else {
+    const u64 tail = static_cast<u64>(fraction);
+    std::memcpy(p + whole + 1, &tail, 8);
+  }
+  return p + len + 1;
 }
 
 }  // namespace
@@ -123,7 +133,13 @@ char* format_g17(char* out, double x) {
   const u64 bits = std::bit_cast<u64>(x);
   const int biased = static_cast<int>(bits >> 52 & 0x7ff);
   const u64 fraction = bits & ((u64{1} << 52) - 1);
-  if (biased == 0x7ff || (biased == 0 && fraction == 0)) return fallback(out, x);  // inf, nan, ±0
+  if ((bits << 1) == 0) {  // ±0
+    *out = '-';
+    out += bits >> 63;
+    *out = '0';
+    return out + 1;
+  }
+  if (biased == 0x7ff) return fallback(out, x);  // inf, nan
   u64 f = biased == 0 ? fraction : fraction | u64{1} << 52;
   int e = biased == 0 ? -1074 : biased - 1075;
   const int lz = std::countl_zero(f);
@@ -146,19 +162,25 @@ char* format_g17(char* out, double x) {
       --k;
       continue;
     }
-    if (whole >= kTen17) {
-      ++k;
-      continue;
-    }
     constexpr u64 kHalf = u64{1} << 63;
-    if (frac >= kHalf - 2 && frac <= kHalf) break;  // too close to a tie to decide here
-    u64 n = whole + (frac > kHalf ? 1 : 0);
+    u64 n;
+    if (whole < kTen17) {
+      if (frac >= kHalf - 2 && frac <= kHalf) break;  // too close to a tie to decide here
+      n = whole + (frac > kHalf ? 1 : 0);
+    } else {
+      // 18 digits (the guess of k was one short; whole < 2·10^17): the last digit and the fraction
+      // round the first 17, undecided only where a carry out of the fraction or a fraction of zero
+      // could make it a tie.
+      ++k;
+      const u64 last = whole % 10;
+      if ((last == 4 && frac >= ~u64{0} - 1) || (last == 5 && frac == 0)) break;
+      n = whole / 10 + (last >= 5 ? 1 : 0);
+    }
     if (n == kTen17) {
       n = kTen16;
       ++k;
     }
-    if (bits >> 63) *out++ = '-';
-    return write_general(out, n, k);
+    return write_general(out, (bits >> 63) != 0, n, k);
   }
   return fallback(out, x);
 }

@@ -5,6 +5,8 @@
 #include "impact3d/io/json_tree.hpp"
 
 #include <charconv>
+#include <cstring>
+#include <string>
 
 #include <simdjson.h>
 
@@ -30,11 +32,27 @@ struct Walk {
   // Below the checker's limits with a margin, so that the checker alone judges every text near one.
   bool within(std::size_t depth) const { return values < limits::kValues && depth + 1 < static_cast<std::size_t>(limits::kDepth); }
 
+  // Whether the first n keys of `o` hold `key`.
+  static bool written(const JsonValue& o, std::size_t n, std::string_view key) {
+    for (std::size_t i = 0; i < n; ++i)
+      if (same_key(o.keys[i], key)) return true;
+    return false;
+  }
+
+  // `out` may hold a node of an earlier document: every field is written again, and its vectors are cut
+  // to this one's sizes, keeping their storage (a batch reads row after row into one tree).
   bool value(od::value v, JsonValue& out, std::size_t depth) {
     ++values;
     if (!within(depth)) return false;
     od::json_type type;
     if (v.type().get(type)) return false;
+    out.flag = false;
+    out.number = 0;
+    out.text.clear();
+    if (type != od::json_type::array && type != od::json_type::object) {
+      out.items.clear();
+      out.keys.clear();
+    }
     switch (type) {
       case od::json_type::null: {
         bool null = false;
@@ -57,29 +75,36 @@ struct Walk {
         od::array a;
         if (v.get_array().get(a)) return false;
         out.type = JsonValue::Type::array;
-        out.items.reserve(4);  // vectors of 3 mostly; fewer reallocations
+        out.keys.clear();
+        std::size_t n = 0;
         for (auto element : a) {
           od::value e;
-          if (element.get(e) || !value(e, out.items.emplace_back(), depth + 1)) return false;
+          if (element.get(e)) return false;
+          if (n == out.items.size()) out.items.emplace_back();
+          if (!value(e, out.items[n], depth + 1)) return false;
+          ++n;
         }
+        out.items.resize(n);
         return true;
       }
       case od::json_type::object: {
         od::object o;
         if (v.get_object().get(o)) return false;
         out.type = JsonValue::Type::object;
-        out.items.reserve(8);
-        out.keys.reserve(8);
+        std::size_t n = 0;
         for (auto field : o) {
           std::string_view key;
           if (field.unescaped_key().get(key)) return false;
           // The duplicate check is a scan: objects with more keys than a case has go to the checker.
-          if (out.keys.size() >= kScannedKeys || key.size() > limits::kKeyChars || !valid(key) ||
-              out.find(key))
-            return false;
-          out.keys.emplace_back(key);
-          if (!value(field.value(), out.items.emplace_back(), depth + 1)) return false;
+          if (n >= kScannedKeys || key.size() > limits::kKeyChars || !valid(key) || written(out, n, key)) return false;
+          if (n == out.keys.size()) out.keys.emplace_back(key);
+          else out.keys[n].assign(key);
+          if (n == out.items.size()) out.items.emplace_back();
+          if (!value(field.value(), out.items[n], depth + 1)) return false;
+          ++n;
         }
+        out.keys.resize(n);
+        out.items.resize(n);
         return true;
       }
     }
@@ -115,7 +140,12 @@ bool parse_json_tree_fast(std::string_view text, JsonValue& out, bool as_written
   if (text.size() > limits::kCaseFileBytes) return false;
   thread_local simdjson::dom::parser strict;
   thread_local od::parser reader;
-  const simdjson::padded_string padded(text);
+  // The text with simdjson's padding after it, in storage the thread keeps from one document to the next.
+  thread_local std::string storage;
+  if (storage.size() < text.size() + simdjson::SIMDJSON_PADDING) storage.resize(text.size() + simdjson::SIMDJSON_PADDING);
+  std::memcpy(storage.data(), text.data(), text.size());
+  std::memset(storage.data() + text.size(), 0, simdjson::SIMDJSON_PADDING);
+  const simdjson::padded_string_view padded(storage.data(), text.size(), storage.size());
   if (strict.parse(padded).error()) return false;
   od::document doc;
   if (reader.iterate(padded).get(doc)) return false;

@@ -468,7 +468,10 @@ CaseError no_solution(const CaseSpec& spec, const SolveError& e) {
 }
 
 CaseSpec read_case(const std::string& json_text) {
-  return Reader().read(parse_json_tree(json_text));
+  // One tree per thread, read into again for each case: a batch's rows reuse its storage.
+  thread_local JsonValue tree;
+  if (parse_json_tree_fast(json_text, tree)) return Reader().read(tree);
+  return Reader().read(parse_json_tree_checked(json_text, "$"));
 }
 
 CaseSpec read_case_tree(const JsonValue& root) { return Reader().read(root); }

@@ -44,7 +44,8 @@ JsonValue parse_json_tree_checked(std::string_view text, const std::string& root
 // simdjson alone: false when it refuses the text or the text reaches a limit, a duplicate key, an
 // object of more than 64 keys or a string that is not valid UTF-8 (left for the checking parser to
 // name). `as_written` keeps the integer -0 as "-0" (the checker, like nlohmann, reads it as 0): for
-// reading back impact3d's own documents, whose -0 is a printed negative zero.
+// reading back impact3d's own documents, whose -0 is a printed negative zero. `out` may hold an earlier
+// tree, whose storage is reused (read_case keeps one per thread); after a refusal its content is unspecified.
 bool parse_json_tree_fast(std::string_view text, JsonValue& out, bool as_written = false);
 
 }  // namespace impact3d::io

@@ -16,7 +16,10 @@ namespace impact3d {
 template <typename Scalar>
 Scalar planar_norm(const Scalar& a, const Scalar& b) {
   if constexpr (std::is_same_v<Scalar, double>) {
-    const double larger = std::fmax(std::fabs(a), std::fabs(b));  // NaN only when both are
+    // Not std::fmax, which is a call into libm. With one NaN, `larger` is the other magnitude or NaN:
+    // the root is then NaN, or hypot has the NaN and the other (inf when that is infinite), as it must.
+    const double fa = std::fabs(a), fb = std::fabs(b);
+    const double larger = fa > fb ? fa : fb;
     if (larger >= 0x1p-450 && larger <= 0x1p500) return std::sqrt(a * a + b * b);
   }
   using std::hypot;
