@@ -9,9 +9,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <random>
+#include <utility>
 
+#include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/scalar_text.hpp"
+#include "impact3d/numeric/ball.hpp"
+#include "impact3d/numeric/scalars.hpp"
 
 namespace {
 
@@ -96,4 +101,38 @@ TEST_CASE("format_g17 is std::to_chars at 17 digits", "[io]") {
     check(x);
   CHECK(mismatched == 0);
   CHECK(compared == 1000000 + 3 * 2098 + 8 * 632 + 3 * 100000 + 10);
+}
+
+// The JSON writer writes a non-finite number as null, telling it by the text's first letter (after a
+// sign): every scalar type's text of an infinity or a NaN, at every digit count, is null there, and every
+// finite text is written as it is.
+TEST_CASE("the JSON writer writes non-finite numbers as null and finite ones as their text, at every scalar type", "[io]") {
+  using impact3d::io::JsonWriter;
+  int compared = 0;
+  auto written = [](auto x, int digits) {
+    JsonWriter w(true);
+    w.number([&](std::string& out) { impact3d::io::append_scalar(out, x, digits); });
+    std::string s = std::move(w).str();
+    s.pop_back();  // the newline
+    return s;
+  };
+  auto check_type = [&](auto zero) {
+    using T = decltype(zero);
+    const T inf = std::numeric_limits<T>::infinity(), nan = std::numeric_limits<T>::quiet_NaN();
+    for (int digits : {std::numeric_limits<T>::max_digits10, 17, 6, 3}) {
+      for (const T& x : {inf, T(-inf), nan, T(-nan)}) {
+        CHECK(written(x, digits) == "null");
+        ++compared;
+      }
+      for (const T& x : {T(0), T(-T(0)), T(1) / T(3), T(-2) / T(7), T(1e300), T(-1e-300), std::numeric_limits<T>::denorm_min()}) {
+        CHECK(written(x, digits) == impact3d::io::scalar_to_text(x, digits));
+        ++compared;
+      }
+    }
+  };
+  [&]<std::size_t... I>(std::index_sequence<I...>) { (check_type(impact3d::ScalarAt<I>(0)), ...); }(std::make_index_sequence<impact3d::kScalarCount>());
+  CHECK(compared == static_cast<int>(impact3d::kScalarCount) * 4 * 11);
+  // A ball: NaN when not finite (one not containing a finite real), its enclosure text otherwise.
+  CHECK(written(impact3d::Ball(std::numeric_limits<double>::infinity()), 17) == "null");
+  CHECK(written(impact3d::Ball(1.0) / impact3d::Ball(3.0), 17) != "null");
 }

@@ -429,9 +429,10 @@ io::JsonPick result_pick() {
 }
 
 std::string result_rows(std::string_view document, const io::JsonPick& pick, long line) {
-  const std::size_t columns = result_columns().size(), strategy = columns, regime = columns + 1, warnings = columns + 2,
+  const std::vector<ResultColumn>& cols = result_columns();
+  const std::size_t columns = cols.size(), strategy = columns, regime = columns + 1, warnings = columns + 2,
                     width = columns + 3;
-  auto of_document = [&](std::size_t column) { return column < columns && result_columns()[column].of_document; };
+  auto of_document = [&](std::size_t column) { return column < columns && cols[column].of_document; };
   // The span of each (result, column): the document's columns sit in every result's row.
   std::size_t results = 0;
   for (const auto& s : pick.spans())
@@ -493,13 +494,13 @@ std::string result_rows(std::string_view document, const io::JsonPick& pick, lon
     out.append(number, std::to_chars(number, number + sizeof number, k).ptr);
     out += ',';
     for (std::size_t c = 0; c < columns; ++c)
-      if (result_columns()[c].of_document) out += ',', cell(k, c);
+      if (cols[c].of_document) out += ',', cell(k, c);
     out += ',';
     if (const auto text = text_of(k, strategy)) strategy_cell(*text);
     out += ',';
     cell(k, regime);
     for (std::size_t c = 0; c < columns; ++c)
-      if (!result_columns()[c].of_document) out += ',', cell(k, c);
+      if (!cols[c].of_document) out += ',', cell(k, c);
     out += ',';
     if (const auto text = text_of(k, warnings); text && *text != "[]") {
       std::string joined;

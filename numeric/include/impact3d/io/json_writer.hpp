@@ -208,20 +208,21 @@ class JsonWriter {
     if (const int column = pick_->column(m.node); column != JsonPick::kNone) pick_->add(column, m.group, m.begin, out_.size());
   }
 
-  static std::string_view finite(std::string_view number_text) {
-    if (number_text.find_first_of("ni") != std::string_view::npos) return "null";  // inf, nan
-    return number_text;
+  // Every scalar's text of an infinity or a NaN starts with "inf" or "nan", signed or not (std::to_chars,
+  // format_g17, the multiprecision types' streams, a ball's text); no finite one has a letter there.
+  static bool non_finite(std::string_view number_text) {
+    if (!number_text.empty() && (number_text.front() == '-' || number_text.front() == '+')) number_text.remove_prefix(1);
+    return !number_text.empty() && (number_text.front() == 'i' || number_text.front() == 'n');
   }
+  static std::string_view finite(std::string_view number_text) { return non_finite(number_text) ? "null" : number_text; }
   template <typename Format>
   void append_number(Format&& format) {
     const std::size_t at = out_.size();
     format(out_);
-    for (std::size_t i = at; i < out_.size(); ++i)
-      if (out_[i] == 'n' || out_[i] == 'i') {  // inf, nan
-        out_.resize(at);
-        out_ += "null";
-        return;
-      }
+    if (non_finite(std::string_view(out_).substr(at))) {
+      out_.resize(at);
+      out_ += "null";
+    }
   }
   static bool plain(std::string_view s) {
     for (const char c : s)
