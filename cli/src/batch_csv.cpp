@@ -332,15 +332,19 @@ std::string split(std::string_view line, std::vector<Cell>& cells) {
     cell.quoted = false;
     if (i < line.size() && line[i] == '"') {
       cell.quoted = true;
-      for (++i;; ++i) {
-        if (i >= line.size()) return fmt::format("cell {}: a quote not closed on its line", count);
-        if (line[i] == '"') {
-          if (i + 1 < line.size() && line[i + 1] == '"') ++i;
-          else break;
+      // Runs up to the next quote are copied whole; a doubled quote is one quote of the text.
+      for (++i;;) {
+        const std::size_t quote = line.find('"', i);
+        if (quote == std::string_view::npos) return fmt::format("cell {}: a quote not closed on its line", count);
+        cell.text.append(line.data() + i, quote - i);
+        i = quote + 1;
+        if (i < line.size() && line[i] == '"') {
+          cell.text += '"';
+          ++i;
+        } else {
+          break;
         }
-        cell.text += line[i];
       }
-      ++i;
       if (i < line.size() && line[i] != ',') return fmt::format("cell {}: text after the closing quote", count);
     } else {
       const std::size_t end = std::min(line.find(',', i), line.size());
