@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "impact3d/io/format_double.hpp"
+#include "impact3d/io/json_tree.hpp"
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/numeric/certified.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
@@ -94,18 +95,11 @@ const std::vector<double>& printed_numbers() {
   static const std::vector<double> numbers = [] {
     const std::string doc = io::result_json(spec(), analyze(io::to_scene<double>(spec()), io::to_strategies<double>(spec())), "p");
     std::vector<double> v;
-    for (std::size_t i = 0; i < doc.size();) {
-      const char c = doc[i];
-      const bool starts = (c == '-' || (c >= '0' && c <= '9')) && i > 0 && (doc[i - 1] == ' ' || doc[i - 1] == '[');
-      double x;
-      const auto r = std::from_chars(doc.data() + i, doc.data() + doc.size(), x);
-      if (starts && r.ec == std::errc()) {
-        v.push_back(x);
-        i = static_cast<std::size_t>(r.ptr - doc.data());
-      } else {
-        ++i;
-      }
-    }
+    auto collect = [&](const auto& self, const io::JsonValue& node) -> void {
+      if (node.is(io::JsonValue::Type::number)) v.push_back(node.number);
+      for (const auto& item : node.items) self(self, item);
+    };
+    collect(collect, io::parse_json_tree(doc));
     return v;
   }();
   return numbers;

@@ -1,7 +1,8 @@
 // The two JSON readers against each other (json_tree.hpp): on the bundled cases, the bad-input cases
 // and seeded random mutations of them (bytes flipped, inserted, deleted, cut), whatever the fast reader
 // accepts the checking reader accepts with the same tree, and the fast reader takes every well-formed
-// case, into a new tree or into one that held the document before. The same property is fuzzed by tests/fuzz/fuzz_json_tree.cpp.
+// case, into a new tree or into one that held the document before. The same property is fuzzed by
+// tests/fuzz/fuzz_json_tree.cpp.
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>

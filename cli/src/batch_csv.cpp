@@ -470,7 +470,6 @@ std::string result_rows(std::string_view document, const io::JsonPick& pick, lon
   // The strategy and the warnings are a container each: short, read as JSON.
   JsonValue scratch;
   auto container = [&](std::string_view text) -> const JsonValue& {
-    scratch = JsonValue{};
     if (!io::parse_json_tree_fast(text, scratch, true))
       throw std::runtime_error("the result document's value does not read back");
     return scratch;

@@ -155,10 +155,14 @@ bool parse_json_tree_fast(std::string_view text, JsonValue& out, bool as_written
   return walk.value(root, out, 0);  // the strict parse has seen that nothing follows the root
 }
 
+void parse_json_tree_into(std::string_view text, JsonValue& out, const std::string& root) {
+  if (!parse_json_tree_fast(text, out)) out = parse_json_tree_checked(text, root);
+}
+
 JsonValue parse_json_tree(std::string_view text, const std::string& root) {
   JsonValue tree;
-  if (parse_json_tree_fast(text, tree)) return tree;
-  return parse_json_tree_checked(text, root);
+  parse_json_tree_into(text, tree, root);
+  return tree;
 }
 
 }  // namespace impact3d::io

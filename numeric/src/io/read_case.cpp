@@ -470,8 +470,8 @@ CaseError no_solution(const CaseSpec& spec, const SolveError& e) {
 CaseSpec read_case(const std::string& json_text) {
   // One tree per thread, read into again for each case: a batch's rows reuse its storage.
   thread_local JsonValue tree;
-  if (parse_json_tree_fast(json_text, tree)) return Reader().read(tree);
-  return Reader().read(parse_json_tree_checked(json_text, "$"));
+  parse_json_tree_into(json_text, tree);
+  return Reader().read(tree);
 }
 
 CaseSpec read_case_tree(const JsonValue& root) { return Reader().read(root); }

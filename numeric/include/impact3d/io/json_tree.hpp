@@ -38,6 +38,9 @@ struct JsonValue {
 // Both readers give the same tree for every document they accept (check_json_tree). Throws CaseError.
 JsonValue parse_json_tree(std::string_view text, const std::string& root = "$");
 
+// The same, into `out`, whose storage the fast reader writes over (read_case keeps one tree per thread).
+void parse_json_tree_into(std::string_view text, JsonValue& out, const std::string& root = "$");
+
 // The checking parser alone (what parse_json_tree falls back to).
 JsonValue parse_json_tree_checked(std::string_view text, const std::string& root = "$");
 
