@@ -24,8 +24,12 @@ Vec3<Scalar> v_Ic_W(const RigidBody<Scalar>& b) {
 
 // V_rel = T2 V_IC2 - T1 V_IC1 in contact axes (eq 6): positive normal component means approach.
 template <typename Scalar>
+Vec3<Scalar> relative_velocity_C(const Scene<Scalar>& s, const Vec3<Scalar>& v_Ic0_W, const Vec3<Scalar>& v_Ic1_W) {
+  return s.R_WC.transpose() * (v_Ic1_W - v_Ic0_W);
+}
+template <typename Scalar>
 Vec3<Scalar> relative_velocity_C(const Scene<Scalar>& s) {
-  return s.R_WC.transpose() * (v_Ic_W(s.body[1]) - v_Ic_W(s.body[0]));
+  return relative_velocity_C(s, v_Ic_W(s.body[0]), v_Ic_W(s.body[1]));
 }
 
 template <typename Scalar>

@@ -34,13 +34,14 @@ struct Problem {
   Scalar kappa_bound, amplification_bound;  // >= kappa and amplification
   // Not shared between threads while unsettled: settle() writes the mutable members.
   mutable const Scene<Scalar>* unsettled = nullptr;
+  Scalar point_speeds = Scalar(0);  // |v_IC1| + |v_IC2|, which the amplification takes (rounding.hpp)
   // The quotient's factor 1 + |V_cp / V_n| that ratios and the decisions on them carry (rounding.hpp).
   Scalar quotient = Scalar(1);
 
   void settle() const {
     if (!unsettled) return;
     kappa = rounding::spd_condition(K);
-    amplification = rounding::amplification(*unsettled, kappa);
+    amplification = rounding::amplification(*unsettled, point_speeds, V_ri.x(), kappa);
     unsettled = nullptr;
   }
 
@@ -75,19 +76,23 @@ Problem<Scalar> make_problem(const Scene<Scalar>& s, bool bounded = false) {
   Problem<Scalar> p;
   p.m_prime = reduced_mass(s);
   p.K = E::coefficient_matrix(s);
-  p.V_ri = relative_velocity_C(s);
+  const Vec3<Scalar> v_Ic0_W = v_Ic_W(s.body[0]), v_Ic1_W = v_Ic_W(s.body[1]);
+  p.V_ri = relative_velocity_C(s, v_Ic0_W, v_Ic1_W);
   p.restitution = s.restitution;
-  if constexpr (rounding::tracks_rounding_v<Scalar>) p.quotient = rounding::quotient_factor(p.V_ri);
+  if constexpr (rounding::tracks_rounding_v<Scalar>) {
+    p.quotient = rounding::quotient_factor(p.V_ri);
+    p.point_speeds = rounding::point_speeds(v_Ic0_W, v_Ic1_W);
+  }
   if (bounded && !is_exact_v<Scalar>) {
     p.kappa_bound = rounding::spd_condition_bound(p.K);
-    p.amplification_bound = rounding::amplification_bound(s, p.V_ri.x(), p.kappa_bound);
+    p.amplification_bound = rounding::amplification_bound(s, p.point_speeds, p.V_ri.x(), p.kappa_bound);
     p.kappa = p.amplification = std::numeric_limits<Scalar>::quiet_NaN();
     p.unsettled = &s;
   } else {
     // K is symmetric positive definite (I plus Gram-type terms), so its eigenvalues give the condition;
     // infinite where rounding made it indefinite. Exact arithmetic has no rounding for it to amplify.
     p.kappa = p.kappa_bound = rounding::spd_condition(p.K);
-    p.amplification = p.amplification_bound = rounding::amplification(s, p.kappa);
+    p.amplification = p.amplification_bound = rounding::amplification(s, p.point_speeds, p.V_ri.x(), p.kappa);
   }
   return p;
 }

@@ -123,18 +123,25 @@ Scalar spd_condition_bound(const Mat3<Scalar>& M) {
   }
 }
 
-// The amplification A above from the conditions of K and of the inertia tensors (computed or bounded)
-// and the normal approach speed V_rn (> 0 for an impact); infinite where either condition is.
+// The amplification A above from the conditions of K and of the inertia tensors (computed or bounded),
+// the normal approach speed V_rn (> 0 for an impact) and the point speeds |v_IC1| + |v_IC2|; infinite
+// where either condition is.
 template <typename Scalar>
-Scalar amplification_of(const Scene<Scalar>& s, const Scalar& V_rn, const Scalar& kappa_K, const Scalar& cond_J) {
+Scalar amplification_of(const Scalar& point_speeds, const Scalar& V_rn, const Scalar& kappa_K, const Scalar& cond_J) {
   if constexpr (!tracks_rounding_v<Scalar>) {
     return Scalar(1);
   } else {
     using std::max;
-    const Scalar cancellation = max(Scalar(1), Scalar((v_Ic_W(s.body[0]).norm() + v_Ic_W(s.body[1]).norm()) / V_rn));
+    const Scalar cancellation = max(Scalar(1), Scalar(point_speeds / V_rn));
     const Scalar a = kappa_K * cond_J * cancellation;
     return is_finite(a) && a > Scalar(0) ? a : std::numeric_limits<Scalar>::infinity();
   }
+}
+
+// |v_IC1| + |v_IC2|, the speeds whose rounding V_rn carries.
+template <typename Scalar>
+Scalar point_speeds(const Vec3<Scalar>& v_Ic0_W, const Vec3<Scalar>& v_Ic1_W) {
+  return v_Ic0_W.norm() + v_Ic1_W.norm();
 }
 
 // spd_condition of an inertia tensor. Many solves of one collision (a Monte Carlo run, a sweep) mostly
@@ -162,18 +169,18 @@ Scalar inertia_condition(const Mat3<Scalar>& J) {
 
 // The amplification A above; exact arithmetic has nothing to amplify.
 template <typename Scalar>
-Scalar amplification(const Scene<Scalar>& s, const Scalar& kappa_K) {
+Scalar amplification(const Scene<Scalar>& s, const Scalar& point_speeds, const Scalar& V_rn, const Scalar& kappa_K) {
   if constexpr (!tracks_rounding_v<Scalar>) return Scalar(1);
   using std::max;
-  return amplification_of(s, Scalar(relative_velocity_C(s).x()), kappa_K,
+  return amplification_of(point_speeds, V_rn, kappa_K,
                           Scalar(max(inertia_condition(s.body[0].J_B), inertia_condition(s.body[1].J_B))));
 }
 
-// An upper bound of the amplification from spd_condition_bound, for the lean path, which has V_rn.
+// An upper bound of the amplification from spd_condition_bound, for the lean path.
 template <typename Scalar>
-Scalar amplification_bound(const Scene<Scalar>& s, const Scalar& V_rn, const Scalar& kappa_K_bound) {
+Scalar amplification_bound(const Scene<Scalar>& s, const Scalar& point_speeds, const Scalar& V_rn, const Scalar& kappa_K_bound) {
   using std::max;
-  return amplification_of(s, V_rn, kappa_K_bound,
+  return amplification_of(point_speeds, V_rn, kappa_K_bound,
                           Scalar(max(spd_condition_bound(s.body[0].J_B), spd_condition_bound(s.body[1].J_B))));
 }
 
