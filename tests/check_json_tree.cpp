@@ -156,3 +156,24 @@ TEST_CASE("random mutations: whatever the fast reader accepts, the checker reads
   CHECK(counts[2] > 300);
   CHECK(counts[0] > 1000);
 }
+
+// same_key compares keys of up to 16 bytes by overlapping word loads (json_tree.hpp): here against
+// std::string_view's equality, on pairs of every length up to 24 from a two-letter alphabet, so that
+// equal pairs, and pairs differing in one byte anywhere, are both common.
+TEST_CASE("same_key is string equality, at every key length") {
+  std::mt19937_64 g(5);
+  int compared = 0, equal = 0;
+  for (int n = 0; n < 200000; ++n) {
+    std::string a(g() % 25, 'a');
+    for (auto& c : a) c = g() % 8 == 0 ? 'b' : 'a';
+    std::string b = a;
+    if (g() % 2 && !b.empty()) b[g() % b.size()] ^= 3;
+    if (g() % 8 == 0) b.push_back('a');
+    CHECK(impact3d::io::same_key(a, b) == (std::string_view(a) == std::string_view(b)));
+    ++compared;
+    equal += a == b;
+  }
+  CHECK(compared == 200000);
+  CHECK(equal > 50000);
+  CHECK(equal < 150000);
+}

@@ -13,6 +13,7 @@
 #include <random>
 #include <utility>
 
+#include "impact3d/io/json_text.hpp"
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/scalar_text.hpp"
 #include "impact3d/numeric/ball.hpp"
@@ -111,7 +112,7 @@ TEST_CASE("the JSON writer writes non-finite numbers as null and finite ones as 
   int compared = 0;
   auto written = [](auto x, int digits) {
     JsonWriter w(true);
-    w.number([&](std::string& out) { impact3d::io::append_scalar(out, x, digits); });
+    w.number([&](auto& out) { impact3d::io::append_scalar(out, x, digits); });
     std::string s = std::move(w).str();
     s.pop_back();  // the newline
     return s;
@@ -135,4 +136,75 @@ TEST_CASE("the JSON writer writes non-finite numbers as null and finite ones as 
   // A ball: NaN when not finite (one not containing a finite real), its enclosure text otherwise.
   CHECK(written(impact3d::Ball(std::numeric_limits<double>::infinity()), 17) == "null");
   CHECK(written(impact3d::Ball(1.0) / impact3d::Ball(3.0), 17) != "null");
+}
+
+// JsonWriter finds the bytes a string must escape eight at a time (json_writer.hpp, next_special); here
+// against RFC 8259's rule read a byte at a time: a control byte (below 0x20), '"' and '\' are escaped,
+// every other byte (UTF-8's high bytes included) is copied. Strings and keys of every length up to 40,
+// their bytes drawn mostly from those at the three tests' edges, so that most words hold one.
+TEST_CASE("the JSON writer escapes exactly the bytes JSON requires, in strings and in keys", "[io]") {
+  using impact3d::io::JsonWriter;
+  auto by_byte = [](const std::string& s) {
+    std::string q = "\"";
+    for (const char ch : s) {
+      const unsigned char c = static_cast<unsigned char>(ch);
+      if (c == '"') q += "\\\"";
+      else if (c == '\\') q += "\\\\";
+      else if (c == '\n') q += "\\n";
+      else if (c < 0x20) q += "\\u00" + std::string(1, "0123456789abcdef"[c >> 4]) + "0123456789abcdef"[c & 15];
+      else q += ch;
+    }
+    return q + "\"";
+  };
+  const unsigned char edges[] = {0x00, 0x01, 0x0a, 0x1f, 0x20, 0x21, 0x22, 0x23, 0x5b, 0x5c, 0x5d, 0x7f, 0x80, 0xa2, 0xdc, 0xff};
+  std::mt19937_64 g(17);
+  int compared = 0, escaped = 0;
+  for (int n = 0; n < 40000; ++n) {
+    std::string s(g() % 41, ' ');
+    const bool rare = g() % 4 == 0;  // one edge byte at most, elsewhere letters: the first hit's position
+    for (auto& ch : s) ch = static_cast<char>(rare ? 'a' + g() % 26 : edges[g() % std::size(edges)]);
+    if (rare && !s.empty()) s[g() % s.size()] = static_cast<char>(edges[g() % std::size(edges)]);
+    const std::string want = by_byte(s);
+    CHECK(JsonWriter::quote(s) == want);
+    JsonWriter w(true);
+    w.begin_object();
+    w.key("a").null();
+    w.key(s).null();
+    w.end_object();
+    CHECK(std::move(w).str() == "{\"a\": null, " + want + ": null}\n");
+    ++compared;
+    escaped += want.size() != s.size() + 2;
+  }
+  CHECK(compared == 40000);
+  CHECK(escaped > 20000);
+}
+
+// JsonText copies short pieces by overlapping fixed-width moves (json_text.hpp): here every length up to
+// 80 from every offset of a source, appended after texts of every length up to 40 (so that the storage
+// grows in the middle of some), against the same appends to a std::string.
+TEST_CASE("JsonText holds what std::string holds after the same appends", "[io]") {
+  std::string source(128, ' ');
+  for (std::size_t i = 0; i < source.size(); ++i) source[i] = static_cast<char>(33 + i % 90);
+  int compared = 0;
+  for (std::size_t before = 0; before <= 40; ++before)
+    for (std::size_t n = 0; n <= 80; ++n) {
+      const std::size_t from = (before * 7 + n) % (source.size() - n + 1);
+      impact3d::io::JsonText text;
+      std::string want;
+      text.append(before, 'x');
+      want.append(before, 'x');
+      text.append(source.data() + from, n);
+      want.append(source, from, n);
+      text += '|';
+      want += '|';
+      char* p = text.room(32);
+      *p++ = 'y';
+      text.commit(p);
+      want += 'y';
+      CHECK(text.view() == want);
+      text.resize(before);
+      CHECK(std::move(text).take() == want.substr(0, before));
+      ++compared;
+    }
+  CHECK(compared == 41 * 81);
 }

@@ -17,6 +17,7 @@
 #include "impact3d/io/decimal.hpp"
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/json_path.hpp"
+#include "impact3d/io/json_text.hpp"
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/limits.hpp"
 
@@ -243,7 +244,8 @@ std::size_t keys_bound(const Node& n) {
 }
 
 // A cell of the result CSV: numbers as the document writes them, strings quoted when they must be.
-void put_text(std::string& out, std::string_view s) {
+template <typename Out>  // std::string or io::JsonText
+void put_text(Out& out, std::string_view s) {
   if (s.find_first_of(",\"\r\n") == std::string_view::npos && (s.empty() || (s.front() != ' ' && s.back() != ' '))) {
     out += s;
     return;
@@ -451,7 +453,7 @@ std::string result_rows(std::string_view document, const io::JsonPick& pick, lon
     else
       for (std::size_t k = 0; k < results; ++k) at[k * width + s.column] = i;
   }
-  std::string out;
+  io::JsonText out;  // short cells copied without a call each (json_text.hpp)
   out.reserve(1024 * std::max<std::size_t>(results, 1));
   auto text_of = [&](std::size_t k, std::size_t column) -> std::optional<std::string_view> {
     const std::size_t i = at[k * width + column];
@@ -490,12 +492,14 @@ std::string result_rows(std::string_view document, const io::JsonPick& pick, lon
     c.text = text;
     c.cell = std::move(cell);
   };
-  char number[24];
   for (std::size_t k = 0; k < results; ++k) {
-    out.append(number, std::to_chars(number, number + sizeof number, line).ptr);
-    out += ',';
-    out.append(number, std::to_chars(number, number + sizeof number, k).ptr);
-    out += ',';
+    constexpr std::size_t kDigits = 24;  // a long or a size_t in decimal, with room to spare
+    char* p = out.room(2 * kDigits + 2);
+    p = std::to_chars(p, p + kDigits, line).ptr;
+    *p++ = ',';
+    p = std::to_chars(p, p + kDigits, k).ptr;
+    *p++ = ',';
+    out.commit(p);
     for (std::size_t c = 0; c < columns; ++c)
       if (cols[c].of_document) out += ',', cell(k, c);
     out += ',';
@@ -513,7 +517,7 @@ std::string result_rows(std::string_view document, const io::JsonPick& pick, lon
     }
     out += '\n';
   }
-  return out;
+  return std::move(out).take();
 }
 
 std::string error_row(long line, const std::string& problem) {

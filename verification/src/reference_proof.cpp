@@ -153,7 +153,7 @@ class Prover {
   void write_block(io::JsonWriter& w) const {
     w.key("certified").begin_object();
     w.key("by").string(fmt::format("impact3d solve --precision certified (ball arithmetic, {})", cert_.at("precision").get<std::string>()));
-    w.key("numbers_proven").number([&](std::string& out) { out += std::to_string(proven_); });
+    w.key("numbers_proven").number([&](auto& out) { out += std::to_string(proven_); });
     w.key("statement").string(fmt::format(
         "Each number written is the exact result for the inputs as written, correctly rounded to {} significant "
         "digits; a number written 0 is within zero_reach of it. Strings, booleans and nulls are the certified "

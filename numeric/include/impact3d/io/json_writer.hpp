@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "impact3d/io/json_pick.hpp"
+#include "impact3d/io/json_text.hpp"
 
 namespace impact3d::io {
 
@@ -35,16 +38,15 @@ class JsonWriter {
       return *this;
     }
     if (one_line_ && !pending_key_ && !has_items_.empty() && k.size() <= kShortKey && plain(k)) {
-      // The keys the program writes, with the separator before them: one append, no escaping.
-      char buf[kShortKey + 6];
-      char* p = buf;
+      // The keys the program writes, with the separator before them: stored in place, no escaping.
+      char* p = out_.room(k.size() + 6);
       if (has_items_.back()) *p++ = ',', *p++ = ' ';
       has_items_.back() = true;
       *p++ = '"';
-      std::memcpy(p, k.data(), k.size());
+      JsonText::copy(p, k.data(), k.size());
       p += k.size();
       *p++ = '"', *p++ = ':', *p++ = ' ';
-      out_.append(buf, static_cast<std::size_t>(p - buf));
+      out_.commit(p);
     } else {
       item();
       append_quoted(out_, k);
@@ -62,9 +64,15 @@ class JsonWriter {
     return true;
   }
   void raw(std::string_view number_text) { value(finite(number_text)); }
-  // A number whose text `format(std::string&)` appends in place, so that no string is made per number.
+  // A number whose text `format(JsonText&)` appends in place, so that no string is made per number.
   template <typename Format>
   void number(Format&& format) {
+    if (!pick_) {  // the common case, without a pick's bookkeeping
+      item();
+      pending_key_ = false;
+      append_number(format);
+      return;
+    }
     const std::size_t from = start();
     item();
     pending_key_ = false;
@@ -73,9 +81,20 @@ class JsonWriter {
     append_number(format);
     picked(m);
   }
-  // A short array of `n` numbers on one line, element i appended by `format(std::string&, i)`.
+  // A short array of `n` numbers on one line, element i appended by `format(JsonText&, i)`.
   template <typename Format>
   void number_row(int n, Format&& format) {
+    if (!pick_) {
+      item();
+      pending_key_ = false;
+      out_ += '[';
+      for (int i = 0; i < n; ++i) {
+        if (i) out_.append(", ", 2);
+        append_number([&](JsonText& out) { format(out, i); });
+      }
+      out_ += ']';
+      return;
+    }
     const std::size_t from = start();
     item();
     pending_key_ = false;
@@ -87,7 +106,7 @@ class JsonWriter {
         Mark m{JsonPick::kNone, row.group, out_.size()};
         m.node = pick_->element(row.node, static_cast<std::size_t>(i), m.group);
         if (pick_->column(m.node) == JsonPick::kNone) continue;
-        append_number([&](std::string& out) { format(out, i); });
+        append_number([&](JsonText& out) { format(out, i); });
         picked(m);
       }
       return;
@@ -97,7 +116,7 @@ class JsonWriter {
       if (i) out_ += ", ";
       Mark m{JsonPick::kNone, row.group, out_.size()};
       if (pick_) m.node = pick_->element(row.node, static_cast<std::size_t>(i), m.group);
-      append_number([&](std::string& out) { format(out, i); });
+      append_number([&](JsonText& out) { format(out, i); });
       picked(m);
     }
     out_ += ']';
@@ -117,16 +136,16 @@ class JsonWriter {
   void null() { value("null"); }
   // A short array of numbers on one line.
   void number_array(const std::vector<std::string>& items) {
-    number_row(static_cast<int>(items.size()), [&](std::string& out, int i) { out += items[i]; });
+    number_row(static_cast<int>(items.size()), [&](JsonText& out, int i) { out += items[i]; });
   }
   std::string str() && {
     out_ += '\n';
     // The next document of this thread (a batch's next row) is likely as long as this one: room for
     // it, and for the few bytes a batch row puts in front.
     reserve_hint() = std::min<std::size_t>(out_.size() + 64, kMaxReserve);
-    return std::move(out_);
+    return std::move(out_).take();
   }
-  std::string str() const& { return out_ + "\n"; }
+  std::string str() const& { return std::string(out_.view()) + "\n"; }
 
   static std::string quote(std::string_view s) {
     std::string q;
@@ -134,15 +153,15 @@ class JsonWriter {
     return q;
   }
 
-  static void append_quoted(std::string& q, std::string_view s) {
+  template <typename Out>  // std::string or JsonText
+  static void append_quoted(Out& q, std::string_view s) {
     q += '"';
     // Runs of characters that need no escape are copied whole.
     std::size_t run = 0;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const unsigned char c = static_cast<unsigned char>(s[i]);
-      if (c >= 0x20 && c != '"' && c != '\\') continue;
+    for (std::size_t i = next_special(s, 0); i < s.size(); i = next_special(s, run)) {
       q.append(s.substr(run, i - run));
       run = i + 1;
+      const unsigned char c = static_cast<unsigned char>(s[i]);
       if (c == '"') q += "\\\"";
       else if (c == '\\') q += "\\\\";
       else if (c == '\n') q += "\\n";
@@ -157,8 +176,29 @@ class JsonWriter {
     q += '"';
   }
 
+  // The first byte at or after `i` that a JSON string must escape (a control byte, '"' or '\\'), or
+  // s.size(). Eight bytes at a time: a byte below 0x20, or equal to 0x22 or 0x5c, sets its high bit in
+  // `hit` (the borrow of the subtraction may also set higher bytes' bits, never a lower one's, so the
+  // lowest bit set is the first such byte); bytes of 0x80 and above are not control bytes.
+  static std::size_t next_special(std::string_view s, std::size_t i) {
+    constexpr std::uint64_t ones = 0x0101010101010101ULL, highs = 0x8080808080808080ULL;
+    constexpr bool little = std::endian::native == std::endian::little;  // the first byte is the lowest
+    for (; little && i + 8 <= s.size(); i += 8) {
+      std::uint64_t x;
+      std::memcpy(&x, s.data() + i, 8);
+      const std::uint64_t quote = x ^ (ones * '"'), backslash = x ^ (ones * '\\');
+      const std::uint64_t hit = ((x - ones * 0x20) & ~x) | ((quote - ones) & ~quote) | ((backslash - ones) & ~backslash);
+      if (hit & highs) return i + static_cast<std::size_t>(std::countr_zero(hit & highs)) / 8;
+    }
+    for (; i < s.size(); ++i) {
+      const unsigned char c = static_cast<unsigned char>(s[i]);
+      if (c < 0x20 || c == '"' || c == '\\') return i;
+    }
+    return s.size();
+  }
+
  private:
-  std::string out_;
+  JsonText out_;
   std::vector<bool> has_items_;
   bool pending_key_ = false;
   bool one_line_;
@@ -219,16 +259,12 @@ class JsonWriter {
   void append_number(Format&& format) {
     const std::size_t at = out_.size();
     format(out_);
-    if (non_finite(std::string_view(out_).substr(at))) {
+    if (non_finite(out_.view().substr(at))) {
       out_.resize(at);
       out_ += "null";
     }
   }
-  static bool plain(std::string_view s) {
-    for (const char c : s)
-      if (static_cast<unsigned char>(c) < 0x20 || c == '"' || c == '\\') return false;
-    return true;
-  }
+  static bool plain(std::string_view s) { return next_special(s, 0) == s.size(); }
   static constexpr std::size_t kShortKey = 48;
   static constexpr std::size_t kMaxReserve = std::size_t{1} << 20;
   static std::size_t& reserve_hint() {

@@ -26,11 +26,11 @@ struct Present {
   }
   // The same text written straight into a document.
   void put(JsonWriter& w, const Scalar& x) const {
-    w.number([&](std::string& out) { append_scalar(out, x, digits); });
+    w.number([&](auto& out) { append_scalar(out, x, digits); });
   }
   void put(JsonWriter& w, const Scalar& x, const Scalar& factor) const { put(w, Scalar(x / factor)); }
   void put_vec(JsonWriter& w, const Vec3<Scalar>& v, const Scalar& factor) const {
-    w.number_row(3, [&](std::string& out, int i) { append_scalar(out, Scalar(v[i] / factor), digits); });
+    w.number_row(3, [&](auto& out, int i) { append_scalar(out, Scalar(v[i] / factor), digits); });
   }
 };
 

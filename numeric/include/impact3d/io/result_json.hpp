@@ -75,7 +75,7 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   w.end_object();
   w.key("relative_velocity").begin_object();
   p.put_vec(w.key("before"), s.V_ri, f.velocity);
-  w.key("after").number_row(3, [&](std::string& out, int i) {
+  w.key("after").number_row(3, [&](auto& out, int i) {
     if (snapped(s.V_rf[i])) out += '0';
     else append_scalar(out, Scalar(s.V_rf[i] / f.velocity), p.digits);
   });
@@ -104,7 +104,7 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
     p.put_vec(w.key("delta_v"), c.dv_W, f.velocity);
     p.put(w.key("delta_v_magnitude"), c.dv, f.velocity);
     if (c.pdof_deg) p.put(w.key("pdof_deg"), *c.pdof_deg); else w.key("pdof_deg").null();
-    if (c.clock) w.key("pdof_clock").number([&](std::string& out) { out += std::to_string(*c.clock); }); else w.key("pdof_clock").null();
+    if (c.clock) w.key("pdof_clock").number([&](auto& out) { out += std::to_string(*c.clock); }); else w.key("pdof_clock").null();
     const auto& m = s.motion[i];
     p.put_vec(w.key("delta_v_vehicle"), m.dv_B, f.velocity);
     p.put(w.key("speed_after"), m.speed_after, f.velocity);
@@ -122,12 +122,12 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   p.put(w.key("loss"), s.energy_loss, f.energy);
   w.key("split").begin_object();
   w.key("rule").string(split_rule);
-  w.key("share").number_row(2, [&](std::string& out, int i) { append_scalar(out, s.deformation.share[i], p.digits); });
+  w.key("share").number_row(2, [&](auto& out, int i) { append_scalar(out, s.deformation.share[i], p.digits); });
   w.end_object();
   w.end_object();
   const auto& mo = s.momentum;
   const Scalar f_angular = f.impulse * f.length;
-  auto residual = [&](JsonWriter& to, const Scalar& r) { to.number([&](std::string& out) { append_scalar(out, r, 3); }); };
+  auto residual = [&](JsonWriter& to, const Scalar& r) { to.number([&](auto& out) { append_scalar(out, r, 3); }); };
   if (!w.key("momentum").unpicked()) {
     w.begin_object();
     w.key("linear").begin_object();
@@ -146,7 +146,7 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
     w.end_array();
     w.end_object();
   }
-  w.key("rounding_bound").number([&](std::string& out) { append_scalar(out, s.rounding_bound, 3); });
+  w.key("rounding_bound").number([&](auto& out) { append_scalar(out, s.rounding_bound, 3); });
   w.key("warnings").begin_array();
   for (const auto& warning : s.warnings) w.string(warning.text);
   w.end_array();

@@ -15,6 +15,7 @@
 
 #include "impact3d/io/decimal.hpp"
 #include "impact3d/io/format_double.hpp"
+#include "impact3d/io/json_text.hpp"
 #include "impact3d/io/limits.hpp"
 
 namespace impact3d::io {
@@ -52,7 +53,25 @@ Scalar scalar_from_text(const std::string& text) {
 // the same text a classic-locale stream prints, at a twentieth of the cost (a double at 17 digits by
 // format_g17, at a fifth of that); the multiprecision types through a stream.
 template <typename Scalar>
-void append_scalar(std::string& out, const Scalar& x, int digits = std::max(std::numeric_limits<Scalar>::max_digits10, 1)) {
+void append_scalar(std::string& out, const Scalar& x, int digits = std::max(std::numeric_limits<Scalar>::max_digits10, 1));
+
+// The same into a writer's text: a double at 17 digits formatted in place, any other through a string.
+template <typename Scalar>
+void append_scalar(JsonText& out, const Scalar& x, int digits = std::max(std::numeric_limits<Scalar>::max_digits10, 1)) {
+  if constexpr (std::is_same_v<Scalar, double>) {
+    if (digits == 17) {
+      out.commit(format_g17(out.room(32), x));
+      return;
+    }
+  }
+  thread_local std::string text;
+  text.clear();
+  append_scalar(text, x, digits);
+  out.append(text);
+}
+
+template <typename Scalar>
+void append_scalar(std::string& out, const Scalar& x, int digits) {
   // A ball (numeric/ball.hpp) is written in its thread's text form (BallText), below.
   if constexpr (std::is_same_v<Scalar, double>) {
     if (digits == 17) {
