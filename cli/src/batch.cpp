@@ -26,6 +26,7 @@
 #include <exception>
 #include <future>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -169,6 +170,7 @@ struct Solved {
 };
 
 Solved with_line(std::string doc, long line) {
+  if (doc.empty() || doc.front() != '{') throw std::logic_error("the result document is not an object");
   Solved s{std::move(doc), true};
   const auto written = fmt::format_to_n(s.head.data(), s.head.size(), "{{\"line\": {}, ", line);
   s.head_size = written.size;

@@ -141,7 +141,7 @@ class JsonWriter {
   std::string str() && {
     out_ += '\n';
     // The next document of this thread (a batch's next row) is likely as long as this one: room for
-    // it, and for the few bytes a batch row puts in front.
+    // it, with a little to spare.
     reserve_hint() = std::min<std::size_t>(out_.size() + 64, kMaxReserve);
     return std::move(out_).take();
   }
