@@ -15,6 +15,9 @@ example="$here/../examples/fig8_side_impact.json"
 echo "input: $n cases, $(du -h "$work/cases.jsonl" | cut -f1) as JSON Lines, $(du -h "$work/cases.csv" | cut -f1) as CSV"
 run() {  # label, input, output, options
   echo "$1:"
+  # The last run's output, written back to the disk after it ended, is not this run's work.
+  sync
+  sleep 5
   /usr/bin/time -f "  wall %e s, user %U s, system %S s, peak memory %M KiB" "$build/cli/impact3d" batch "$2" -o "$3" "${@:4}"
   echo "  output: $(wc -l <"$3") lines, $(du -h "$3" | cut -f1)"
   rm -f "$3"

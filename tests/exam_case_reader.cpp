@@ -116,3 +116,47 @@ TEST_CASE("a description is read, echoed in the result, and printed escaped like
     CHECK(e.line() == "$.description: expected a string, got a number");
   }
 }
+
+namespace {
+
+// minimal() with the first `from` replaced by `to`.
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  REQUIRE(at != std::string::npos);
+  return text.replace(at, from.size(), to);
+}
+
+std::string reader_error(const std::string& text) {
+  try {
+    io::read_case(text);
+  } catch (const io::CaseError& e) {
+    return e.line();
+  }
+  return "accepted";
+}
+
+}  // namespace
+
+// The reader takes a literal whose digits are all zeros as zero from its double, without parsing its
+// decimal (the decimal stays the judge of every other literal the double cannot place): the known
+// answers are the contract's ranges (case-format.md): zero is admitted wherever a number may be zero,
+// refused where it must be positive, and a literal with a digit that is not zero is not zero, however
+// far below the range its double falls.
+TEST_CASE("zero in any spelling is zero, and a literal with a digit that is not zero is not", "[reader]") {
+  const std::vector<std::string> zeros = {"0", "-0.0", "0.000", "0e5", "0E-400", "-0.0e+999", "0.000e-1000", "-0e0"};
+  int checked = 0;
+  for (const auto& z : zeros) {
+    INFO(z);
+    const io::CaseSpec c = io::read_case(with(minimal(), "[0, 12, 0]", "[" + z + ", 12, 0]"));
+    CHECK(c.vehicles[1].velocity[0].value == 0);
+    CHECK(reader_error(with(minimal(), "\"mass\": 1500", "\"mass\": " + z)).find("$.vehicles[0].mass: must be > 0") == 0);
+    CHECK(reader_error(with(minimal(), "\"mu\": 0.4", "\"mu\": " + z)) == "accepted");
+    ++checked;
+  }
+  CHECK(checked == static_cast<int>(zeros.size()));
+  for (const std::string tiny : {"1e-400", "-0.0001e-399", "0.00000000000000000000000000001e-330"}) {
+    INFO(tiny);
+    CHECK(reader_error(with(minimal(), "[0, 12, 0]", "[" + tiny + ", 12, 0]")).find("is not zero but below 1e-100") !=
+          std::string::npos);
+  }
+}

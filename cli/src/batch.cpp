@@ -24,7 +24,8 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
-#include <future>
+#include <deque>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -40,6 +41,7 @@
 #include "impact3d/io/render.hpp"
 #include "impact3d/io/strategy_option.hpp"
 #include "batch_csv.hpp"
+#include "helper_thread.hpp"
 #include "user_error.hpp"
 
 namespace impact3d::cli {
@@ -363,9 +365,15 @@ int batch(const BatchOptions& o) {
   // A block's rows are written by another thread, straight from their strings, while the next block
   // is solved.
   std::vector<Solved> results, writing;
-  std::future<bool> pending;  // the write of `writing`, true when it all went out
-  auto wait_write = [&] {
-    if (pending.valid() && !pending.get()) output_lost = true;
+  std::size_t to_write = 0;
+  bool wrote = true;  // the last write all went out
+  // The rows of the block in hand go to whichever thread asks next; a stop leaves those not yet started.
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    for (std::size_t i; !stop_signal && (i = next.fetch_add(1)) < rows.size();) {
+      results[i] = solve_row(rows[i], o, strategies, formats);
+      done[i] = 1;
+    }
   };
   // The next block is read by this thread while the others solve the current one (with --jobs 2 or
   // more), as far as whole lines are in hand: the current block's answers never wait for a slow
@@ -385,6 +393,18 @@ int batch(const BatchOptions& o) {
       into.push_back(std::move(row));
     }
   };
+  // Declared after everything their tasks read, so that leaving early finishes the tasks first; the
+  // writer made at once, the solvers as blocks first need them, all with the signals left to this
+  // thread.
+  const std::unique_ptr<HelperThread> writer_thread = [] {
+    const SignalsToMain mask;
+    return std::make_unique<HelperThread>();
+  }();
+  std::deque<HelperThread> solvers;
+  auto wait_write = [&] {
+    writer_thread->wait();
+    if (!wrote) output_lost = true;
+  };
   while (!stop_signal && !output_lost) {
     if (ahead_error) std::rethrow_exception(ahead_error);
     if (ahead.empty()) read_block(rows, true);
@@ -392,28 +412,22 @@ int batch(const BatchOptions& o) {
     if (rows.empty()) break;
     results.assign(rows.size(), {});
     done.assign(rows.size(), 0);
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {  // a stop leaves the rows not yet started
-      for (std::size_t i; !stop_signal && (i = next.fetch_add(1)) < rows.size();) {
-        results[i] = solve_row(rows[i], o, strategies, formats);
-        done[i] = 1;
-      }
-    };
-    {
-      std::vector<std::jthread> pool;  // joined on leaving the scope, whatever happens
-      {
-        const SignalsToMain mask;
-        for (unsigned t = 1; t < std::min<std::size_t>(jobs, rows.size()); ++t) pool.emplace_back(work);
-      }
-      if (!pool.empty()) {
-        try {
-          read_block(ahead, false);
-        } catch (...) {
-          ahead_error = std::current_exception();
-        }
-      }
-      work();
+    next = 0;
+    const std::size_t helpers = std::min<std::size_t>(jobs, rows.size()) - 1;
+    while (solvers.size() < helpers) {
+      const SignalsToMain mask;
+      solvers.emplace_back();
     }
+    for (std::size_t t = 0; t < helpers; ++t) solvers[t].start(work);
+    if (helpers > 0) {
+      try {
+        read_block(ahead, false);
+      } catch (...) {
+        ahead_error = std::current_exception();
+      }
+    }
+    work();
+    for (std::size_t t = 0; t < helpers; ++t) solvers[t].wait();
     std::size_t written = 0;
     for (; written < rows.size() && done[written]; ++written) {  // the finished rows before the first not
       ++(results[written].ok ? solved : rejected);
@@ -423,10 +437,8 @@ int batch(const BatchOptions& o) {
     wait_write();
     if (output_lost) break;
     std::swap(results, writing);
-    {
-      const SignalsToMain mask;
-      pending = std::async(std::launch::async, [&out, &writing, written] { return write_rows(out, writing, written); });
-    }
+    to_write = written;
+    writer_thread->start([&] { wrote = write_rows(out, writing, to_write); });
     progress.update(read, reader.bytes());
   }
   wait_write();

@@ -27,7 +27,8 @@ namespace {
 using Node = CaseColumns::Node;
 using io::JsonValue;
 
-bool json_number(std::string_view s) {
+// `exponent`, when given, is told whether the number has an exponent part.
+bool json_number(std::string_view s, bool* exponent = nullptr) {
   std::size_t i = 0;
   auto digits = [&] {
     const std::size_t start = i;
@@ -39,6 +40,7 @@ bool json_number(std::string_view s) {
   else if (!digits()) return false;
   if (i < s.size() && s[i] == '.' && (++i, !digits())) return false;
   if (i < s.size() && (s[i] == 'e' || s[i] == 'E')) {
+    if (exponent) *exponent = true;
     ++i;
     if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
     if (!digits()) return false;
@@ -174,7 +176,7 @@ class TreeBuilder {
             break;
           }
           if (count == out.keys.size()) out.keys.emplace_back(), out.items.emplace_back();
-          out.keys[count] = key;
+          if (!io::same_key(out.keys[count], key)) out.keys[count] = key;  // mostly the last row's key
           ok = value(n.members[m], out.items[count++], depth + 1);
         }
         out.keys.resize(count);
@@ -211,7 +213,8 @@ class TreeBuilder {
       out.type = JsonValue::Type::null;
       return true;
     }
-    if (c.quoted || !json_number(c.text)) {
+    bool exponent = false;
+    if (c.quoted || !json_number(c.text, &exponent)) {
       if (!text_ok(c.text)) return false;
       out.type = JsonValue::Type::string;
       out.text = c.text;
@@ -219,7 +222,7 @@ class TreeBuilder {
     }
     std::string_view raw = c.text;
     if (raw.size() > io::limits::kLiteralChars) return false;
-    const long e = io::written_exponent(raw);
+    const long e = exponent ? io::written_exponent(raw) : 0;
     if (e > io::limits::kExponent || e < -io::limits::kExponent) return false;
     double x;
     const auto r = std::from_chars(raw.data(), raw.data() + raw.size(), x);

@@ -104,6 +104,17 @@ bool in_magnitude_range(const Number& n) {
   const double a = std::abs(n.value);
   return a != 0 && a <= kFastMax && a >= kFastMin;
 }
+// A literal whose digits are all zeros is zero whatever its exponent, and its double is ±0, which
+// answers sign and range as the decimal does: a case's dozen zeros need no decimal parsed.
+bool zero_literal(const Number& n) {
+  if (n.value != 0) return false;
+  for (const char c : n.text) {
+    if (c == 'e' || c == 'E') break;
+    if (c >= '1' && c <= '9') return false;
+  }
+  return true;
+}
+bool decided_by_double(const Number& n) { return in_magnitude_range(n) || zero_literal(n); }
 
 class Reader {
  public:
@@ -138,44 +149,56 @@ class Reader {
     return *v;
   }
 
-  Number number(const JsonValue& v, const Where& at) const {
+  // The overloads with `out` write a field of the spec being read: its literal is copied once, where a
+  // returned Number was made and then moved twice, into the vehicle and the vehicle into the case (a
+  // case has some fifty numbers).
+  void number(const JsonValue& v, const Where& at, Number& out) const {
     if (!v.is(Type::number)) fail(at, fmt::format("expected a number, got {}", type_name(v)));
-    Number n{v.text, v.number};
+    out.text = v.text;
+    out.value = v.number;
+    const Number& n = out;
     if (!std::isfinite(n.value)) fail(at, fmt::format("not a finite number ({})", n.text));
-    if (in_magnitude_range(n)) return n;
+    if (decided_by_double(n)) return;
     const Decimal d = decimal(n);
     if (compare_magnitude(d, kMax) > 0)
       fail(at, fmt::format("out of range: magnitude {} exceeds {:g}", n.text, std::stod(limits::kMaxMagnitude)));
     if (!d.zero() && compare_magnitude(d, kMin) < 0)
       fail(at, fmt::format("out of range: {} is not zero but below {:g} in magnitude", n.text, std::stod(limits::kMinMagnitude)));
+  }
+  Number number(const JsonValue& v, const Where& at) const {
+    Number n;
+    number(v, at, n);
     return n;
   }
 
-  Number number_or(const JsonValue& obj, const Where& at, std::string_view key) const {
-    if (auto* v = optional(obj, key)) return number(*v, Where(at, key));
-    return Number{"0", 0.0};
+  void number_or(const JsonValue& obj, const Where& at, std::string_view key, Number& out) const {
+    if (auto* v = optional(obj, key)) return number(*v, Where(at, key), out);
+    out = Number{"0", 0.0};
   }
 
   // A number in range is positive exactly when its double is: rounding keeps the sign and no literal in
   // range rounds to zero.
-  static bool positive_value(const Number& n) { return in_magnitude_range(n) ? n.value > 0 : compare(decimal(n), kZero) > 0; }
+  static bool positive_value(const Number& n) { return decided_by_double(n) ? n.value > 0 : compare(decimal(n), kZero) > 0; }
 
+  void positive(const JsonValue& v, const Where& at, Number& out) const {
+    number(v, at, out);
+    if (!positive_value(out)) fail(at, fmt::format("must be > 0 (got {})", out.text));
+  }
   Number positive(const JsonValue& v, const Where& at) const {
-    Number n = number(v, at);
-    if (!positive_value(n)) fail(at, fmt::format("must be > 0 (got {})", n.text));
+    Number n;
+    positive(v, at, n);
     return n;
   }
 
-  Vector3 vector3(const JsonValue& v, const Where& at) const {
+  void vector3(const JsonValue& v, const Where& at, Vector3& out) const {
     if (!v.is(Type::array)) fail(at, fmt::format("expected an array of 3 numbers, got {}", type_name(v)));
     if (v.size() != 3) fail(at, fmt::format("expected 3 numbers, got {}", v.size()));
-    return {number(v.items[0], Where(at, std::size_t{0})), number(v.items[1], Where(at, std::size_t{1})),
-            number(v.items[2], Where(at, std::size_t{2}))};
+    for (std::size_t i = 0; i < 3; ++i) number(v.items[i], Where(at, i), out[i]);
   }
 
-  Vector3 vector3_or_zero(const JsonValue& obj, const Where& at, std::string_view key) const {
-    if (auto* v = optional(obj, key)) return vector3(*v, Where(at, key));
-    return {Number{"0", 0.0}, Number{"0", 0.0}, Number{"0", 0.0}};
+  void vector3_or_zero(const JsonValue& obj, const Where& at, std::string_view key, Vector3& out) const {
+    if (auto* v = optional(obj, key)) return vector3(*v, Where(at, key), out);
+    out = {Number{"0", 0.0}, Number{"0", 0.0}, Number{"0", 0.0}};
   }
 
   std::string string(const JsonValue& v, const Where& at) const {
@@ -217,12 +240,13 @@ class Reader {
       const char* keys[3] = {"Ixx", "Iyy", "Izz"};
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
-          veh.inertia[i][j] = i == j ? positive(required(v, at, keys[i]), Where(at, keys[i])) : Number{"0", 0.0};
+          if (i == j) positive(required(v, at, keys[i]), Where(at, keys[i]), veh.inertia[i][j]);
+          else veh.inertia[i][j] = Number{"0", 0.0};
       return;
     }
     if (!v.is(Type::array) || v.size() != 3)
       fail(at, "expected a 3x3 tensor [[Ixx, Ixy, Ixz], ...] or {\"Ixx\", \"Iyy\", \"Izz\"}");
-    for (std::size_t i = 0; i < 3; ++i) veh.inertia[i] = vector3(v.items[i], Where(at, i));
+    for (std::size_t i = 0; i < 3; ++i) vector3(v.items[i], Where(at, i), veh.inertia[i]);
     for (int i = 0; i < 3; ++i) {
       if (!positive_value(veh.inertia[i][i]))
         fail(at, fmt::format("not positive definite: diagonal entry [{}][{}] = {}", i, i, veh.inertia[i][i].text));
@@ -246,12 +270,11 @@ class Reader {
     if (!(minor2 > 0) || !(det > 0)) fail(at, "not positive definite");
   }
 
-  VehicleSpec vehicle(const JsonValue& v, const Where& at) const {
+  void vehicle(const JsonValue& v, const Where& at, VehicleSpec& veh) const {
     object(v, at, {"name", "mass", "inertia", "orientation_deg", "orientation_matrix", "velocity", "angular_velocity",
                    "impulse_center", "dimensions"});
-    VehicleSpec veh;
     if (auto* n = optional(v, "name")) veh.name = string(*n, Where(at, "name"));
-    veh.mass = positive(required(v, at, "mass"), Where(at, "mass"));
+    positive(required(v, at, "mass"), Where(at, "mass"), veh.mass);
     inertia(veh, required(v, at, "inertia"), Where(at, "inertia"));
     static const JsonValue empty = [] {
       JsonValue e;
@@ -264,21 +287,20 @@ class Reader {
       if (o) fail(mat, "give either orientation_deg or orientation_matrix, not both");
       if (!m->is(Type::array) || m->size() != 3) fail(mat, "expected a 3x3 rotation matrix (rows of R_WB)");
       std::array<Vector3, 3> rows;
-      for (std::size_t i = 0; i < 3; ++i) rows[i] = vector3(m->items[i], Where(mat, i));
+      for (std::size_t i = 0; i < 3; ++i) vector3(m->items[i], Where(mat, i), rows[i]);
       veh.orientation_matrix = rows;
       veh.orientation_path = mat.str();
     }
     const Where angles(at, "orientation_deg");
     if (o) object(*o, angles, {"yaw", "pitch", "roll"});
     const JsonValue& orient = o ? *o : empty;
-    veh.yaw = number_or(orient, angles, "yaw");
-    veh.pitch = number_or(orient, angles, "pitch");
-    veh.roll = number_or(orient, angles, "roll");
-    veh.velocity = vector3(required(v, at, "velocity"), Where(at, "velocity"));
-    veh.angular_velocity = vector3_or_zero(v, at, "angular_velocity");
-    veh.impulse_center = vector3(required(v, at, "impulse_center"), Where(at, "impulse_center"));
+    number_or(orient, angles, "yaw", veh.yaw);
+    number_or(orient, angles, "pitch", veh.pitch);
+    number_or(orient, angles, "roll", veh.roll);
+    vector3(required(v, at, "velocity"), Where(at, "velocity"), veh.velocity);
+    vector3_or_zero(v, at, "angular_velocity", veh.angular_velocity);
+    vector3(required(v, at, "impulse_center"), Where(at, "impulse_center"), veh.impulse_center);
     if (const JsonValue* d = optional(v, "dimensions")) veh.dimensions = dimensions(*d, Where(at, "dimensions"));
-    return veh;
   }
 
   DimensionsSpec dimensions(const JsonValue& v, const Where& at) const {
@@ -295,9 +317,8 @@ class Reader {
     return d;
   }
 
-  ContactSpec contact(const JsonValue& v, const Where& at) const {
+  void contact(const JsonValue& v, const Where& at, ContactSpec& c) const {
     object(v, at, {"normal_yaw_deg", "normal_pitch_deg", "tangent_roll_deg", "normal", "tangent"});
-    ContactSpec c;
     c.path = at.str();
     const bool angles = optional(v, "normal_yaw_deg") || optional(v, "normal_pitch_deg") || optional(v, "tangent_roll_deg");
     const bool vectors = optional(v, "normal") || optional(v, "tangent");
@@ -305,20 +326,19 @@ class Reader {
     if (!angles && !vectors) fail(Where(at, "normal_yaw_deg"), "missing (or give \"normal\" and \"tangent\" vectors)");
     c.by_vectors = vectors;
     if (vectors) {
-      c.normal = vector3(required(v, at, "normal"), Where(at, "normal"));
-      c.tangent = vector3(required(v, at, "tangent"), Where(at, "tangent"));
+      vector3(required(v, at, "normal"), Where(at, "normal"), c.normal);
+      vector3(required(v, at, "tangent"), Where(at, "tangent"), c.tangent);
     } else {
-      c.normal_yaw = number(required(v, at, "normal_yaw_deg"), Where(at, "normal_yaw_deg"));
-      c.normal_pitch = number_or(v, at, "normal_pitch_deg");
-      c.tangent_roll = number_or(v, at, "tangent_roll_deg");
+      number(required(v, at, "normal_yaw_deg"), Where(at, "normal_yaw_deg"), c.normal_yaw);
+      number_or(v, at, "normal_pitch_deg", c.normal_pitch);
+      number_or(v, at, "tangent_roll_deg", c.tangent_roll);
     }
-    return c;
   }
 
   Number non_negative(const JsonValue& obj, const Where& at, std::string_view key) const {
     const Where here(at, key);
     Number n = number(required(obj, at, key), here);
-    if (in_magnitude_range(n) ? n.value < 0 : compare(decimal(n), kZero) < 0) fail(here, fmt::format("must be >= 0 (got {})", n.text));
+    if (decided_by_double(n) ? n.value < 0 : compare(decimal(n), kZero) < 0) fail(here, fmt::format("must be >= 0 (got {})", n.text));
     return n;
   }
 
@@ -379,10 +399,10 @@ class Reader {
     const JsonValue& vs = required(root, top, "vehicles");
     if (!vs.is(Type::array)) fail(vehicles, fmt::format("expected an array of 2 vehicles, got {}", type_name(vs)));
     if (vs.size() != 2) fail(vehicles, fmt::format("expected 2 vehicles, got {}", vs.size()));
-    for (std::size_t i = 0; i < 2; ++i) c.vehicles[i] = vehicle(vs.items[i], Where(vehicles, i));
-    c.contact = contact(required(root, top, "contact"), Where("$.contact"));
+    for (std::size_t i = 0; i < 2; ++i) vehicle(vs.items[i], Where(vehicles, i), c.vehicles[i]);
+    contact(required(root, top, "contact"), Where("$.contact"), c.contact);
     const Where restitution("$.restitution");
-    c.restitution = number(required(root, top, "restitution"), restitution);
+    number(required(root, top, "restitution"), restitution, c.restitution);
     const bool in_unit = in_magnitude_range(c.restitution) && c.restitution.value < 1
                              ? c.restitution.value > 0
                              : compare(decimal(c.restitution), kZero) >= 0 && compare(decimal(c.restitution), kOne) <= 0;

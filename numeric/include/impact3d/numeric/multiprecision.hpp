@@ -50,6 +50,40 @@ struct NumTraitsFor : Eigen::GenericNumTraits<T> {
 
 }  // namespace impact3d::mp
 
+// Boost 1.74's three-operand MPFR operations take their last operand only as the dynamic backend, so
+// for the stack backend a * b fell back to a copy of a and then a *= b (1 to 4% of the 100-digit lean
+// route, BENCHMARKS.md). These write the result in one correctly rounded MPFR call, the value the copy
+// and the in-place operation gave; Boost's fallback differs only in the sign of an exact zero from
+// y - y into y itself, which no operator of a number without expression templates does (each writes
+// a fresh result).
+namespace boost::multiprecision::backends {
+
+template <unsigned D>
+inline void eval_add(mpfr_float_backend<D, allocate_stack>& r, const mpfr_float_backend<D, allocate_stack>& x,
+                     const mpfr_float_backend<D, allocate_stack>& y) {
+  mpfr_add(r.data(), x.data(), y.data(), MPFR_RNDN);
+}
+template <unsigned D>
+inline void eval_subtract(mpfr_float_backend<D, allocate_stack>& r, const mpfr_float_backend<D, allocate_stack>& x,
+                          const mpfr_float_backend<D, allocate_stack>& y) {
+  mpfr_sub(r.data(), x.data(), y.data(), MPFR_RNDN);
+}
+template <unsigned D>
+inline void eval_multiply(mpfr_float_backend<D, allocate_stack>& r, const mpfr_float_backend<D, allocate_stack>& x,
+                          const mpfr_float_backend<D, allocate_stack>& y) {
+  if (&x == &y)
+    mpfr_sqr(r.data(), x.data(), MPFR_RNDN);
+  else
+    mpfr_mul(r.data(), x.data(), y.data(), MPFR_RNDN);
+}
+template <unsigned D>
+inline void eval_divide(mpfr_float_backend<D, allocate_stack>& r, const mpfr_float_backend<D, allocate_stack>& x,
+                        const mpfr_float_backend<D, allocate_stack>& y) {
+  mpfr_div(r.data(), x.data(), y.data(), MPFR_RNDN);
+}
+
+}  // namespace boost::multiprecision::backends
+
 namespace impact3d {
 
 // Both at once, correctly rounded as Boost's sin and cos (which call mpfr_sin and mpfr_cos) are.
