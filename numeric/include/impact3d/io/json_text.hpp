@@ -32,7 +32,6 @@ class JsonText {
     copy(buf_.data() + size_, p, n);
     size_ += n;
   }
-  void append(const char* begin, const char* end) { append(begin, static_cast<std::size_t>(end - begin)); }
   void append(std::string_view s) { append(s.data(), s.size()); }
   void append(std::size_t n, char c) {
     if (n > buf_.size() - size_) grow(size_ + n);
