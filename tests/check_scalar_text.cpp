@@ -104,6 +104,24 @@ TEST_CASE("format_g17 is std::to_chars at 17 digits", "[io]") {
   CHECK(compared == 1000000 + 3 * 2098 + 8 * 632 + 3 * 100000 + 10);
 }
 
+// format_g17 writes the 16 digits after the first as two groups of eight, each from fixed-point
+// products (format_double.cpp). The integers 10^8 + w, w < 10^8, print as 1 and then w's eight digits,
+// so this passes every group of eight through them; the text to match is std::to_chars's of the integer.
+TEST_CASE("format_g17 writes every group of eight digits", "[io]") {
+  long compared = 0, mismatched = 0;
+  for (std::uint64_t w = 0; w < 100000000; ++w) {
+    char mine[32], theirs[32];
+    char* a = impact3d::io::format_g17(mine, static_cast<double>(100000000 + w));
+    char* b = std::to_chars(theirs, theirs + sizeof theirs, 100000000 + w).ptr;
+    ++compared;
+    if (a - mine != b - theirs || std::memcmp(mine, theirs, static_cast<std::size_t>(b - theirs)) != 0) {
+      if (++mismatched <= 10) UNSCOPED_INFO(std::string(mine, a) << " != " << std::string(theirs, b));
+    }
+  }
+  CHECK(mismatched == 0);
+  CHECK(compared == 100000000);
+}
+
 // The JSON writer writes a non-finite number as null, telling it by the text's first letter (after a
 // sign): every scalar type's text of an infinity or a NaN, at every digit count, is null there, and every
 // finite text is written as it is.

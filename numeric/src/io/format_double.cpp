@@ -4,7 +4,9 @@
 // digits; its next 64 bits, short of the true fraction by less than two units of their last place, say
 // which way to round unless the fraction is within that of one half, where std::to_chars decides. The
 // guess of k from the binary exponent is right or one short; one short, the product has 18 digits and the
-// last of them rounds the 17, where a second product used to be taken.
+// last of them rounds the 17. Both roundings are formed and one kept, since which applies is a coin toss
+// to the branch predictor. A product short of 16 digits, which the guess rules out unless a truncated
+// 10^q brought an exact power of ten below it (none did, in the tests), is left to std::to_chars as well.
 #include "impact3d/io/format_double.hpp"
 
 #include <array>
@@ -62,17 +64,29 @@ constexpr u64 kTen16 = 10'000'000'000'000'000ULL, kTen17 = 100'000'000'000'000'0
 
 char* fallback(char* out, double x) { return std::to_chars(out, out + 24, x, std::chars_format::general, 17).ptr; }
 
-// The eight decimal digits of v < 10^8, one a byte, most significant in the lowest byte, by arithmetic
-// on lanes of one 64-bit word (no loop, no table): two lanes of four digits, four of two, eight of one.
-// Each lane's quotient by 100 (by 10) is its product by 10486 / 2^20 (by 103 / 2^10), exact below 10^4
-// (below 179).
+// The eight decimal digits of v < 10^8, one a byte, most significant in the lowest byte. v / 10^6 is
+// taken in fixed point with 52 bits of fraction, and each product of the fraction by 100 brings the next
+// pair of digits above the point (exact for every v < 10^8, checked exhaustively); a table splits each
+// pair into its two digits, so the four pairs wait on one multiplication each.
+struct DigitPairs {
+  std::array<std::uint16_t, 100> split{};
+  constexpr DigitPairs() {
+    for (unsigned v = 0; v < 100; ++v) split[v] = static_cast<std::uint16_t>(v / 10 | (v % 10) << 8);
+  }
+};
+constexpr DigitPairs kDigitPairs;
+
 u64 eight_digits(std::uint32_t v) {
-  const u64 x = v;
-  const u64 halves = x / 10000 | (x % 10000) << 32;  // abcd, efgh
-  const u64 high = (halves * 10486 >> 20) & 0x0000007f0000007fULL;  // ab, ef
-  const u64 pairs = (halves - 100 * high) << 16 | high;  // ab, cd, ef, gh in 16-bit lanes
-  const u64 tens = (pairs * 103 >> 10) & 0x000f000f000f000fULL;
-  return tens | (pairs - 10 * tens) << 8;  // a, b, ..., h in bytes, least significant first
+  constexpr u64 kScale = (u64{1} << 52) / 1'000'000 + 1, kFraction = (u64{1} << 52) - 1;
+  u64 t = v * kScale;
+  const u64 p0 = kDigitPairs.split[t >> 52];
+  t = (t & kFraction) * 100;
+  const u64 p1 = kDigitPairs.split[t >> 52];
+  t = (t & kFraction) * 100;
+  const u64 p2 = kDigitPairs.split[t >> 52];
+  t = (t & kFraction) * 100;
+  const u64 p3 = kDigitPairs.split[t >> 52];
+  return p0 | p1 << 16 | p2 << 32 | p3 << 48;
 }
 
 constexpr u64 kAscii = 0x3030303030303030ULL;
@@ -83,18 +97,20 @@ constexpr u64 kAscii = 0x3030303030303030ULL;
 // no load waits on a narrower store); with the sign they reach at most 27 bytes from `out`.
 char* write_general(char* out, bool negative, u64 n, int k) {
   static_assert(std::endian::native == std::endian::little);
-  const u64 high = n / 100'000'000;  // nine digits, the first not zero
-  const u64 a = eight_digits(static_cast<std::uint32_t>(high % 100'000'000));
-  const u64 b = eight_digits(static_cast<std::uint32_t>(n % 100'000'000));
+  // first, then digits 1-8 and 9-16, each from n by independent products.
+  const u64 first = n / 10'000'000'000'000'000ULL;
+  const u64 q8 = n / 100'000'000;
+  const u64 a = eight_digits(static_cast<std::uint32_t>(q8 - first * 100'000'000));
+  const u64 b = eight_digits(static_cast<std::uint32_t>(n - q8 * 100'000'000));
   // Trailing zero digits are the zero bytes at the top of b, then of a.
   const int zeros = b != 0 ? std::countl_zero(b) / 8 : 8 + (a != 0 ? std::countl_zero(a) / 8 : 8);
   const int len = 17 - zeros;
-  const char first = static_cast<char>('0' + high / 100'000'000);
+  const char lead = static_cast<char>('0' + first);
   const u128 rest = (a + kAscii) | static_cast<u128>(b + kAscii) << 64;  // digits 1 to 16
   *out = '-';
   char* p = out + negative;
   if (k < -4 || k >= 17) {
-    p[0] = first;
+    p[0] = lead;
     p[1] = '.';
     std::memcpy(p + 2, &rest, 16);
     p += len > 1 ? len + 1 : 1;
@@ -108,12 +124,12 @@ char* write_general(char* out, bool negative, u64 n, int k) {
   if (k < 0) {
     std::memcpy(p, "0.000000", 8);
     p += 1 - k;  // "0." and -k-1 zeros
-    p[0] = first;
+    p[0] = lead;
     std::memcpy(p + 1, &rest, 16);
     return p + len;
   }
   const int whole = k + 1;
-  p[0] = first;
+  p[0] = lead;
   std::memcpy(p + 1, &rest, 16);
   if (len <= whole) return p + whole;
   p[whole] = '.';
@@ -148,41 +164,31 @@ char* format_g17(char* out, double x) {
   // floor((e + 63)·log10 2), exact over this range; a wrong guess is corrected below all the same.
   int k = ((e + 63) * 315653) >> 20;
   const Powers& table = powers();
-  for (int attempt = 0; attempt < 3; ++attempt) {
-    const int q = 16 - k;
-    if (q < kQMin || q > kQMax) break;
-    const Power& p = table[static_cast<std::size_t>(q - kQMin)];
-    const u128 low = static_cast<u128>(f) * p.lo, high = static_cast<u128>(f) * p.hi;
-    const u128 mid = (low >> 64) + static_cast<u64>(high);
-    const u64 w1 = static_cast<u64>(mid), w2 = static_cast<u64>(high >> 64) + static_cast<u64>(mid >> 64);
-    const int r = -(e + p.s) - 128;  // the point sits r bits into the top word
-    if (r < 1 || r > 63) break;
-    const u64 whole = w2 >> r, frac = w2 << (64 - r) | w1 >> r;
-    if (whole < kTen16) {
-      --k;
-      continue;
-    }
-    constexpr u64 kHalf = u64{1} << 63;
-    u64 n;
-    if (whole < kTen17) {
-      if (frac >= kHalf - 2 && frac <= kHalf) break;  // too close to a tie to decide here
-      n = whole + (frac > kHalf ? 1 : 0);
-    } else {
-      // 18 digits (the guess of k was one short; whole < 2·10^17): the last digit and the fraction
-      // round the first 17, undecided only where a carry out of the fraction or a fraction of zero
-      // could make it a tie.
-      ++k;
-      const u64 last = whole % 10;
-      if ((last == 4 && frac >= ~u64{0} - 1) || (last == 5 && frac == 0)) break;
-      n = whole / 10 + (last >= 5 ? 1 : 0);
-    }
-    if (n == kTen17) {
-      n = kTen16;
-      ++k;
-    }
-    return write_general(out, (bits >> 63) != 0, n, k);
-  }
-  return fallback(out, x);
+  const int q = 16 - k;
+  if (q < kQMin || q > kQMax) return fallback(out, x);
+  const Power& p = table[static_cast<std::size_t>(q - kQMin)];
+  const u128 low = static_cast<u128>(f) * p.lo, high = static_cast<u128>(f) * p.hi;
+  const u128 mid = (low >> 64) + static_cast<u64>(high);
+  const u64 w1 = static_cast<u64>(mid), w2 = static_cast<u64>(high >> 64) + static_cast<u64>(mid >> 64);
+  const int r = -(e + p.s) - 128;  // the point sits r bits into the top word
+  if (r < 1 || r > 63) return fallback(out, x);
+  const u64 whole = w2 >> r, frac = w2 << (64 - r) | w1 >> r;
+  if (whole < kTen16) return fallback(out, x);
+  constexpr u64 kHalf = u64{1} << 63;
+  // 17 digits, or 18 when the guess of k was one short (whole < 2·10^17): then the last digit and the
+  // fraction round the first 17, undecided only where a carry out of the fraction or a fraction of zero
+  // could make it a tie. Both are formed and one is kept, without a branch on which.
+  const bool eighteen = whole >= kTen17;
+  const u64 tenth = whole / 10, last = whole - 10 * tenth;
+  const bool undecided = eighteen ? (last == 4 && frac >= ~u64{0} - 1) || (last == 5 && frac == 0)
+                                  : frac - (kHalf - 2) <= 2;
+  if (undecided) return fallback(out, x);
+  u64 n = eighteen ? tenth + (last >= 5) : whole + (frac > kHalf);
+  k += eighteen;
+  const bool carry = n == kTen17;
+  n = carry ? kTen16 : n;
+  k += carry;
+  return write_general(out, (bits >> 63) != 0, n, k);
 }
 
 }  // namespace impact3d::io

@@ -86,11 +86,16 @@ inline void eval_divide(mpfr_float_backend<D, allocate_stack>& r, const mpfr_flo
 
 namespace impact3d {
 
-// Both at once, correctly rounded as Boost's sin and cos (which call mpfr_sin and mpfr_cos) are.
+namespace mp {
+// The sine and cosine of x, each correctly rounded to nearest at its own precision (s and c alike), the
+// values mpfr_sin_cos gives, which Boost's sin and cos (mpfr_sin, mpfr_cos) give too (mpfr_sin_cos.cpp).
+void sin_cos(mpfr_ptr s, mpfr_ptr c, mpfr_srcptr x);
+}  // namespace mp
+
 template <>
 struct SinCosRadians<mp::float100> {
   static void of(const mp::float100& rad, mp::float100& s, mp::float100& c) {
-    mpfr_sin_cos(s.backend().data(), c.backend().data(), rad.backend().data(), MPFR_RNDN);
+    mp::sin_cos(s.backend().data(), c.backend().data(), rad.backend().data());
   }
 };
 
