@@ -79,7 +79,7 @@ void pc_crash_100(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
 }
 
-// Of which the raw parameters to a scene (nine mpfr_sin_cos and the rotations).
+// Of which the raw parameters to a scene (nine sines and cosines, and the rotations).
 void scene_of_100(benchmark::State& state) {
   using F = mp::float100;
   std::vector<RawCollision<F>> raw;

@@ -110,3 +110,23 @@ TEST_CASE("at 100 digits SinCosRadians gives Boost's sin and cos bit for bit", "
   CHECK(mismatched == 0);
   CHECK(checked == 20000 + 14 + 2);
 }
+
+// MPFR lets a result be the argument itself; so does SinCosRadians<float100>, whether Arb's enclosures
+// decide (a third) or MPFR computes after all (pi / 2, whose cosine Arb encloses too widely).
+TEST_CASE("at 100 digits SinCosRadians takes its argument in place of either result", "[rotation]") {
+  using F = mp::float100;
+  const F pi = boost::math::constants::pi<F>();
+  int checked = 0;
+  for (const F& x : {F(1) / F(3), pi / 2, F(0), F(-0.0)}) {
+    F s = x, c;
+    SinCosRadians<F>::of(s, s, c);
+    CHECK(s == boost::multiprecision::sin(x));
+    CHECK(c == boost::multiprecision::cos(x));
+    F s2, c2 = x;
+    SinCosRadians<F>::of(c2, s2, c2);
+    CHECK(s2 == boost::multiprecision::sin(x));
+    CHECK(c2 == boost::multiprecision::cos(x));
+    ++checked;
+  }
+  CHECK(checked == 4);
+}

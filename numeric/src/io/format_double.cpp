@@ -5,8 +5,9 @@
 // which way to round unless the fraction is within that of one half, where std::to_chars decides. The
 // guess of k from the binary exponent is right or one short; one short, the product has 18 digits and the
 // last of them rounds the 17. Both roundings are formed and one kept, since which applies is a coin toss
-// to the branch predictor. A product short of 16 digits, which the guess rules out unless a truncated
-// 10^q brought an exact power of ten below it (none did, in the tests), is left to std::to_chars as well.
+// to the branch predictor. A product of 16 digits or fewer cannot occur (the true product is 10^16
+// exactly or at least 1.001 · 10^16, far beyond the truncation's error); if it did, std::to_chars
+// would write the text.
 #include "impact3d/io/format_double.hpp"
 
 #include <array>
@@ -67,7 +68,7 @@ char* fallback(char* out, double x) { return std::to_chars(out, out + 24, x, std
 // The eight decimal digits of v < 10^8, one a byte, most significant in the lowest byte. v / 10^6 is
 // taken in fixed point with 52 bits of fraction, and each product of the fraction by 100 brings the next
 // pair of digits above the point (exact for every v < 10^8, checked exhaustively); a table splits each
-// pair into its two digits, so the four pairs wait on one multiplication each.
+// pair into its two digits, so each pair waits on one multiplication after the last.
 struct DigitPairs {
   std::array<std::uint16_t, 100> split{};
   constexpr DigitPairs() {
@@ -161,7 +162,8 @@ char* format_g17(char* out, double x) {
   const int lz = std::countl_zero(f);
   f <<= lz;
   e -= lz;
-  // floor((e + 63)·log10 2), exact over this range; a wrong guess is corrected below all the same.
+  // floor((e + 63)·log10 2), exact over this range: the product has 17 digits, or 18 when x is at least
+  // the next power of ten.
   int k = ((e + 63) * 315653) >> 20;
   const Powers& table = powers();
   const int q = 16 - k;

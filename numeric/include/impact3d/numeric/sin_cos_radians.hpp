@@ -1,6 +1,6 @@
 // The sine and cosine of one angle in radians, for rotation.hpp. A scalar whose library computes both
-// at once specializes this (multiprecision.hpp: MPFR's mpfr_sin_cos, one argument reduction for two
-// correctly rounded results).
+// at once specializes this (multiprecision.hpp: MPFR's two correctly rounded results, from Arb's
+// enclosures where they decide them, numeric/src/mpfr_sin_cos.cpp).
 #pragma once
 
 #include <cmath>
