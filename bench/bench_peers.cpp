@@ -1,11 +1,13 @@
 // pc-crash from raw parameters (angles, full tensors, velocities, impulse centres) to the impulse, side by
 // side in one run: impact3d's SIMD batches (each instruction set this CPU runs), its scalar lean path
 // (impulse only, and with the post-impact velocities; both engines), analyze, and the naive scalar peer
-// (bench/naive/pc_crash.hpp), on the same seeded random approaching collisions.
+// (bench/naive/pc_crash.hpp), on the same seeded random approaching collisions; Wach and Brach on the
+// lanes and on the scalar lean path, on the same collisions.
 // tests/check_naive_peers.cpp holds the peer to impact3d, tests/check_batch.cpp the batches to the lean
 // path, tests/check_lean.cpp the lean path to analyze.
 #include <benchmark/benchmark.h>
 
+#include <optional>
 #include <vector>
 
 #include "impact3d/numeric/analysis.hpp"
@@ -113,9 +115,51 @@ void pc_crash_simd(benchmark::State& state) {
   batch::use_simd(sets[0]);
 }
 
+// Wach and Brach on the same collisions, the widest lanes (batch::wach_columns, brach_columns) against
+// the scalar lean path: 0 Wach capped at the CIR, 1 Brach with both ratios given, 2 Brach on the
+// Critical Impulse Line (both critical).
+Strategy<double> other_strategy(std::int64_t which, double mu) {
+  if (which == 0) return Wach<double>{mu, WachLimit::cir};
+  if (which == 1) return Brach<double>{0.8 * mu, 0.2 * mu};
+  return Brach<double>{std::nullopt, std::nullopt};
+}
+
+void strategy_simd(benchmark::State& state) {
+  const auto& cs = cases();
+  batch::CollisionTable table(cs.size());
+  std::vector<double> mu_t(cs.size()), mu_z(cs.size());
+  for (std::size_t k = 0; k < cs.size(); ++k) {
+    table.set(k, raw_cases()[k], cs[k].mu);
+    mu_t[k] = 0.8 * cs[k].mu, mu_z[k] = 0.2 * cs[k].mu;
+  }
+  batch::ImpulseTable out(cs.size());
+  const batch::CollisionColumns in = table.columns();
+  const batch::ImpulseColumns o = out.columns();
+  state.SetLabel(state.range(0) == 0 ? "wach cir" : state.range(0) == 1 ? "brach given" : "brach both critical");
+  for (auto _ : state) {
+    if (state.range(0) == 0) batch::wach_columns(in, WachLimit::cir, o, 0, cs.size());
+    else if (state.range(0) == 1) batch::brach_columns(in, mu_t.data(), mu_z.data(), o, 0, cs.size());
+    else batch::brach_columns(in, nullptr, nullptr, o, 0, cs.size());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * cs.size()));
+}
+
+void strategy_lean(benchmark::State& state) {
+  const auto& cs = cases();
+  const auto& raw = raw_cases();
+  state.SetLabel(state.range(0) == 0 ? "wach cir" : state.range(0) == 1 ? "brach given" : "brach both critical");
+  for (auto _ : state)
+    for (std::size_t k = 0; k < raw.size(); ++k)
+      benchmark::DoNotOptimize(solve_lean(scene_of(raw[k]), other_strategy(state.range(0), cs[k].mu)));
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
+}
+
 }  // namespace
 
 BENCHMARK(pc_crash_simd)->DenseRange(0, 2);
+BENCHMARK(strategy_simd)->Name("wach_brach_simd")->DenseRange(0, 2);
+BENCHMARK(strategy_lean)->Name("wach_brach_lean")->DenseRange(0, 2);
 BENCHMARK(pc_crash_lean<Engine::generated, Want::impulse>);
 BENCHMARK(pc_crash_lean<Engine::direct, Want::impulse>);
 BENCHMARK(pc_crash_lean<Engine::generated, Want::velocities>);

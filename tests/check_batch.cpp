@@ -12,6 +12,9 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
+#include <optional>
+#include <string>
 #include <limits>
 #include <random>
 
@@ -32,6 +35,99 @@ double ulps(double a, double b) {
     return i < 0 ? std::numeric_limits<std::int64_t>::min() - i : i;
   };
   return std::abs(static_cast<double>(key(a) - key(b)));
+}
+
+// Rows every strategy's lanes must leave to the scalar path, made from a random one.
+enum class Special { separating, head_on, overflowing, nan_input };
+
+RawCollision<double> made(RawCollision<double> r, Special kind) {
+  switch (kind) {
+    case Special::separating:
+      for (auto& v : r.vehicle) v.v_W = -v.v_W, v.w_B = -v.w_B;
+      break;
+    case Special::head_on:  // along the normal: no contact-plane impulse nor sliding, the planes undefined
+      for (int i = 0; i < 2; ++i) {
+        auto& v = r.vehicle[i];
+        v.J_B = Mat3<double>(Vec3<double>(500, 2500, 2800).asDiagonal());
+        v.yaw_deg = v.pitch_deg = v.roll_deg = 0;
+        v.v_W = Vec3<double>(i == 0 ? 10 : -10, 0, 0), v.w_B.setZero(), v.p_CgIc_B = Vec3<double>(i == 0 ? 2 : -2, 0, 0);
+      }
+      r.normal_yaw_deg = 180, r.normal_pitch_deg = 0, r.tangent_roll_deg = 0;
+      break;
+    case Special::overflowing:  // masses whose m' overflows: a singular system
+      r.vehicle[0].mass = r.vehicle[1].mass = 1e300;
+      break;
+    case Special::nan_input:  // a NaN product of inertia: K is NaN, every closed form too
+      r.vehicle[1].J_B(0, 1) = std::numeric_limits<double>::quiet_NaN();
+      break;
+  }
+  return r;
+}
+
+struct Rows {
+  std::vector<RawCollision<double>> rows;
+  std::vector<double> mus;
+  std::size_t random = 0;
+};
+
+// `random` seeded random collisions with `special` rows among them, spread over lane positions (the
+// k-th before random row `spacing` k + k % 7), each random row k changed by `change` (its collision and
+// mu), and the last `short_tail` rows dropped: a tail shorter than any lane group.
+template <typename Change>
+Rows mixed_rows(std::size_t random, std::uint64_t seed, std::size_t special, std::size_t spacing, std::size_t short_tail,
+                Change change) {
+  Rows out;
+  for (const auto& c : bench::random_collisions(random, seed)) out.rows.push_back(bench::raw_of(c)), out.mus.push_back(c.mu);
+  out.random = out.rows.size();
+  for (std::size_t k = 0; k < special; ++k) {
+    RawCollision<double> r = out.rows[k];
+    double mu = out.mus[k];
+    change(k, r, mu);
+    const auto at = static_cast<std::ptrdiff_t>(spacing * k + k % 7);
+    out.rows.insert(out.rows.begin() + at, r);
+    out.mus.insert(out.mus.begin() + at, mu);
+  }
+  out.rows.resize(out.rows.size() - short_tail);
+  out.mus.resize(out.rows.size());
+  return out;
+}
+
+// What the rows compared showed.
+struct Tally {
+  int statuses[3] = {0, 0, 0}, regimes[4] = {0, 0, 0, 0};  // by Status, and by Regime of the solved rows
+  int undecided = 0, undefined = 0, negative = 0, tensile = 0;  // rows with each warning
+  double worst = 0;                                           // |dP| / (eps A |P|)
+};
+
+// Each row of `out` against solve_lean with the row's strategy: the same status, warning codes and
+// regime, and the impulse within agreement_bound.
+template <typename StrategyOf>
+Tally compare_rows(const std::vector<RawCollision<double>>& rows, batch::ImpulseTable& out, StrategyOf strategy_of) {
+  Tally t;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Scene<double> s = scene_of(rows[i]);
+    const auto r = solve_lean(s, strategy_of(i));
+    INFO("row " << i);
+    REQUIRE(out.status[i] == static_cast<std::uint8_t>(r.status));
+    ++t.statuses[out.status[i]];
+    CHECK(out.warnings[i] == r.warnings);
+    t.undecided += has_warning(r.warnings, WarningCode::undecided);
+    t.undefined += has_warning(r.warnings, WarningCode::plane_undefined);
+    t.negative += has_warning(r.warnings, WarningCode::negative_ratio);
+    t.tensile += has_warning(r.warnings, WarningCode::tensile_normal_impulse);
+    if (r.status != Status::solved) {
+      CHECK(std::isnan(out.P_C[0][i]));
+      continue;
+    }
+    CHECK(out.regime[i] == static_cast<std::uint8_t>(r.impulse.regime));
+    ++t.regimes[out.regime[i]];
+    const Vec3<double> P(out.P_C[0][i], out.P_C[1][i], out.P_C[2][i]);
+    const double A = make_problem<GeneratedEngine>(s).amplification;
+    const double err = (P - r.impulse.P_C).norm() / r.impulse.P_C.norm();
+    CHECK(err <= rounding::agreement_bound(A));
+    t.worst = std::max(t.worst, err / (std::numeric_limits<double>::epsilon() * A));
+  }
+  return t;
 }
 
 }  // namespace
@@ -82,45 +178,16 @@ TEST_CASE("the SIMD batch gives solve_lean's status, regime and warnings on ever
           "agreement_bound",
           "[batch]") {
   FOR_EACH_SIMD();
-  auto cs = bench::random_collisions(4000, 29);
-  std::vector<RawCollision<double>> rows;
-  std::vector<double> mus;
-  for (const auto& c : cs) rows.push_back(bench::raw_of(c)), mus.push_back(c.mu);
-  // Rows the lanes must leave to the scalar path, spread over lane positions.
-  const std::size_t n_random = rows.size();
-  for (std::size_t k = 0; k < 40; ++k) {
-    RawCollision<double> r = rows[k];
-    double mu = mus[k];
-    switch (k % 5) {
-      case 0:  // separating
-        for (auto& v : r.vehicle) v.v_W = -v.v_W, v.w_B = -v.w_B;
-        break;
-      case 1: {  // mu exactly at the GIR: undecided
-        const Scene<double> s = scene_of(r);
-        mu = *solve_lean(s, Strategy<double>(PcCrash<double>{0})).impulse.gir;
-        break;
-      }
-      case 2:  // head-on along the normal: phi_FI undefined
-        for (int i = 0; i < 2; ++i) {
-          auto& v = r.vehicle[i];
-          v.J_B = Mat3<double>(Vec3<double>(500, 2500, 2800).asDiagonal());
-          v.yaw_deg = v.pitch_deg = v.roll_deg = 0;
-          v.v_W = Vec3<double>(i == 0 ? 10 : -10, 0, 0), v.w_B.setZero(), v.p_CgIc_B = Vec3<double>(i == 0 ? 2 : -2, 0, 0);
-        }
-        r.normal_yaw_deg = 180, r.normal_pitch_deg = 0, r.tangent_roll_deg = 0;
-        break;
-      case 3:  // overflowing masses: a singular system
-        r.vehicle[0].mass = r.vehicle[1].mass = 1e300;
-        break;
-      case 4:  // a NaN product of inertia: K is NaN, every closed form too
-        r.vehicle[1].J_B(0, 1) = std::numeric_limits<double>::quiet_NaN();
-        break;
-    }
-    rows.insert(rows.begin() + static_cast<std::ptrdiff_t>(97 * k + k % 7), r);
-    mus.insert(mus.begin() + static_cast<std::ptrdiff_t>(97 * k + k % 7), mu);
-  }
-  rows.resize(rows.size() - 3);  // a tail shorter than any lane group
-  mus.resize(rows.size());
+  // Rows the lanes must leave to the scalar path, and mu exactly at the GIR: undecided.
+  const Rows mixed = mixed_rows(4000, 29, 40, 97, 3, [](std::size_t k, RawCollision<double>& r, double& mu) {
+    const Special kinds[] = {Special::separating, Special::separating, Special::head_on, Special::overflowing,
+                             Special::nan_input};
+    if (k % 5 == 1) mu = *solve_lean(scene_of(r), Strategy<double>(PcCrash<double>{0})).impulse.gir;
+    else r = made(r, kinds[k % 5]);
+  });
+  const auto& rows = mixed.rows;
+  const auto& mus = mixed.mus;
+  const std::size_t n_random = mixed.random;
   batch::CollisionTable table(rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) table.set(i, rows[i], mus[i]);
   batch::ImpulseTable out(rows.size());
@@ -129,47 +196,112 @@ TEST_CASE("the SIMD batch gives solve_lean's status, regime and warnings on ever
   const std::size_t on_scalar = batch::pc_crash_columns(in, out.columns(), 0, rows.size() / 2 + 1) +
                                 batch::pc_crash_columns(in, out.columns(), rows.size() / 2 + 1, rows.size());
 
-  int solved = 0, full = 0, sliding = 0, statuses[3] = {0, 0, 0}, undecided = 0, undefined = 0;
-  double worst = 0;  // |dP| / (eps A |P|)
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const RawCollision<double> back = batch::row_of(in, i);
-    CHECK(back.vehicle[1].J_B(2, 1) == rows[i].vehicle[1].J_B(2, 1));
-    const Scene<double> s = scene_of(rows[i]);
-    const auto r = solve_lean(s, Strategy<double>(PcCrash<double>{mus[i]}));
-    INFO("row " << i);
-    REQUIRE(out.status[i] == static_cast<std::uint8_t>(r.status));
-    ++statuses[out.status[i]];
-    CHECK(out.warnings[i] == r.warnings);
-    undecided += has_warning(r.warnings, WarningCode::undecided);
-    undefined += has_warning(r.warnings, WarningCode::plane_undefined);
-    if (r.status != Status::solved) {
-      CHECK(std::isnan(out.P_C[0][i]));
-      continue;
-    }
-    ++solved;
-    CHECK(out.regime[i] == static_cast<std::uint8_t>(r.impulse.regime));
-    ++(r.impulse.regime == Regime::full ? full : sliding);
-    const Vec3<double> P(out.P_C[0][i], out.P_C[1][i], out.P_C[2][i]);
-    const double A = make_problem<GeneratedEngine>(s).amplification;
-    const double err = (P - r.impulse.P_C).norm() / r.impulse.P_C.norm();
-    CHECK(err <= rounding::agreement_bound(A));
-    worst = std::max(worst, err / (std::numeric_limits<double>::epsilon() * A));
-  }
-  INFO(batch::simd_name() << ": worst " << worst << " eps A over " << solved << " rows");
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    CHECK(batch::row_of(in, i).vehicle[1].J_B(2, 1) == rows[i].vehicle[1].J_B(2, 1));
+  const Tally t = compare_rows(rows, out, [&](std::size_t i) { return Strategy<double>(PcCrash<double>{mus[i]}); });
+  const int solved = t.statuses[0];
+  INFO(batch::simd_name() << ": worst " << t.worst << " eps A over " << solved << " rows");
   CHECK(rows.size() == n_random + 40 - 3);
-  CHECK(statuses[0] == solved);
-  CHECK(statuses[1] == 8);  // the separating rows
-  CHECK(statuses[2] == 16);  // the overflowing and the NaN rows
-  CHECK(statuses[0] + statuses[1] + statuses[2] == static_cast<int>(rows.size()));
-  CHECK(undecided >= 8);
-  CHECK(undefined >= 8);
-  CHECK(full > 500);
-  CHECK(sliding > 500);
+  CHECK(t.statuses[1] == 8);   // the separating rows
+  CHECK(t.statuses[2] == 16);  // the overflowing and the NaN rows
+  CHECK(solved + t.statuses[1] + t.statuses[2] == static_cast<int>(rows.size()));
+  CHECK(t.undecided >= 8);
+  CHECK(t.undefined >= 8);
+  CHECK(t.regimes[static_cast<int>(Regime::full)] > 500);
+  CHECK(t.regimes[static_cast<int>(Regime::sliding)] > 500);
+  CHECK(t.regimes[static_cast<int>(Regime::full)] + t.regimes[static_cast<int>(Regime::sliding)] == solved);
   // The lanes decided every row but the 40 built for the scalar path (each fails a lane's test: not
   // approaching, not finite, a plane or a regime within twice the cheap bound), the two ranges' tails
   // (under a lane group each) and the few random rows whose decisions fall within twice the cheap bound.
   INFO(on_scalar << " rows on the scalar path");
   CHECK(on_scalar >= 40);
   CHECK(on_scalar <= 40 + 2 * 8 + 20);
-  CHECK(worst <= 2 * rounding::kResultRoundings);
+  CHECK(t.worst <= 2 * rounding::kResultRoundings);
+}
+
+// Wach and Brach on lanes, against solve_lean with the same strategy, row by row, as pc-crash above:
+// every cap (CIR, GIR) and every form of Brach (both ratios given, either critical, both critical), on
+// random collisions mixed with rows the lanes must leave to the scalar path: separating, an overflowing
+// mass, a NaN input, a head-on impact (Wach's plane undefined: no initial sliding velocity), mu exactly
+// at Wach's CIR (undecided) and a negative mu (a negative ratio). Random rows give negative caps and
+// tensile normal impulses too, which the lanes decide and flag themselves where the sign is clear.
+TEST_CASE("wach_columns and brach_columns give solve_lean's status, regime and warnings on every row, and its "
+          "impulse within agreement_bound",
+          "[batch]") {
+  FOR_EACH_SIMD();
+  const Rows mixed = mixed_rows(1500, 41, 48, 31, 5, [](std::size_t k, RawCollision<double>& r, double& mu) {
+    const Special kinds[] = {Special::separating, Special::overflowing, Special::nan_input, Special::head_on};
+    if (k % 6 == 4) mu = *solve_lean(scene_of(r), Strategy<double>(Wach<double>{0, WachLimit::cir})).impulse.cir;
+    else if (k % 6 == 5) mu = -0.3;
+    else r = made(r, kinds[k % 6]);
+  });
+  const auto& rows = mixed.rows;
+  const auto& mus = mixed.mus;
+  const std::size_t n_random = mixed.random;
+  // Brach's ratios: mu_t from mu, mu_z of both signs.
+  std::vector<double> mu_t(rows.size()), mu_z(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) mu_t[i] = 0.8 * mus[i], mu_z[i] = 0.2 * mus[i] * (i % 3 == 0 ? -1 : 1);
+  batch::CollisionTable table(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) table.set(i, rows[i], mus[i]);
+  const batch::CollisionColumns in = table.columns();
+  const std::size_t half = rows.size() / 2 + 3;
+
+  struct Variant {
+    const char* name;
+    std::function<std::size_t(const batch::ImpulseColumns&, std::size_t, std::size_t)> run;
+    std::function<Strategy<double>(std::size_t)> strategy;
+  };
+  const auto given = [](const std::vector<double>& column, std::size_t i) { return std::optional<double>(column[i]); };
+  const std::vector<Variant> variants = {
+      {"wach cir", [&](auto& o, auto b, auto e) { return batch::wach_columns(in, WachLimit::cir, o, b, e); },
+       [&](std::size_t i) { return Strategy<double>(Wach<double>{mus[i], WachLimit::cir}); }},
+      {"wach gir", [&](auto& o, auto b, auto e) { return batch::wach_columns(in, WachLimit::gir, o, b, e); },
+       [&](std::size_t i) { return Strategy<double>(Wach<double>{mus[i], WachLimit::gir}); }},
+      {"brach given", [&](auto& o, auto b, auto e) { return batch::brach_columns(in, mu_t.data(), mu_z.data(), o, b, e); },
+       [&](std::size_t i) { return Strategy<double>(Brach<double>{given(mu_t, i), given(mu_z, i)}); }},
+      {"brach mu_t critical", [&](auto& o, auto b, auto e) { return batch::brach_columns(in, nullptr, mu_z.data(), o, b, e); },
+       [&](std::size_t i) { return Strategy<double>(Brach<double>{std::nullopt, given(mu_z, i)}); }},
+      {"brach mu_z critical", [&](auto& o, auto b, auto e) { return batch::brach_columns(in, mu_t.data(), nullptr, o, b, e); },
+       [&](std::size_t i) { return Strategy<double>(Brach<double>{given(mu_t, i), std::nullopt}); }},
+      {"brach both critical", [&](auto& o, auto b, auto e) { return batch::brach_columns(in, nullptr, nullptr, o, b, e); },
+       [&](std::size_t)  { return Strategy<double>(Brach<double>{std::nullopt, std::nullopt}); }},
+  };
+  int checked_variants = 0, brach_tensile = 0;
+  for (const Variant& v : variants) {
+    INFO(v.name);
+    batch::ImpulseTable out(rows.size());
+    // Two ranges, as two threads would split it.
+    const std::size_t on_scalar = v.run(out.columns(), 0, half) + v.run(out.columns(), half, rows.size());
+    const Tally t = compare_rows(rows, out, v.strategy);
+    const auto& statuses = t.statuses;
+    const auto& regimes = t.regimes;
+    INFO("negative " << t.negative << ", tensile " << t.tensile << ", undecided " << t.undecided << ", undefined "
+                      << t.undefined);
+    INFO(batch::simd_name() << ": worst " << t.worst << " eps A over " << statuses[0] << " rows, " << on_scalar
+                            << " on the scalar path");
+    CHECK(statuses[1] == 8);   // the separating rows
+    CHECK(statuses[2] >= 16);  // the overflowing and the NaN rows, and for Brach any singular critical ratio
+    CHECK(statuses[0] + statuses[1] + statuses[2] == static_cast<int>(rows.size()));
+    CHECK(statuses[0] > 1400);
+    if (v.name[0] == 'w') {
+      CHECK(t.undefined >= 8);  // the head-on rows
+      CHECK(t.negative >= 50);  // mu = -0.3, below either cap, and the random rows whose cap is negative
+      CHECK(t.tensile >= 20);
+      CHECK(regimes[static_cast<int>(Regime::capped)] > 100);
+      CHECK(regimes[static_cast<int>(Regime::sliding)] > 100);
+      if (std::string(v.name) == "wach cir") CHECK(t.undecided >= 8);
+    } else {
+      CHECK(regimes[static_cast<int>(Regime::as_given)] == statuses[0]);
+      brach_tensile += t.tensile;
+    }
+    // The lanes decided all but the rows built for the scalar path, the two ranges' tails (under a lane
+    // group each) and the few random rows whose decisions fall within thrice the cheap bound.
+    CHECK(on_scalar >= 24);
+    CHECK(on_scalar <= 48 + 2 * 8 + 30);
+    CHECK(t.worst <= 2 * rounding::kResultRoundings);
+    ++checked_variants;
+  }
+  CHECK(checked_variants == 6);
+  CHECK(brach_tensile >= 50);  // ratios that tip the normal impulse, decided on the lanes as on the scalar path
+  CHECK(rows.size() == n_random + 48 - 5);
 }

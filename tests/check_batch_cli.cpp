@@ -38,15 +38,24 @@ std::vector<fs::path> case_files() {
   return files;
 }
 
-// Each case on one line, a malformed row after every third, a blank line after every fifth.
+// Each case on one line, a malformed row after every third, a blank line after every fifth, and before
+// each copy of them a case that does not approach.
 Input make_input(const fs::path& dir, int copies) {
   Input in;
   in.path = dir / "cases.jsonl";
   const std::vector<std::string> malformed = {"{\"units\": \"SI\"", "[1, 2, 3]", "{\"vehicles\": 5}", "not json at all",
                                               "{\"restitution\": 0.1, \"restitution\": 0.2}"};
+  // A case that parses but is rejected when solved: Figure 8 with every velocity reversed separates.
+  json separating = json::parse(slurp(fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json"));
+  for (json& v : separating.at("vehicles"))
+    for (const char* key : {"velocity", "angular_velocity"})
+      if (v.contains(key))
+        for (json& x : v.at(key)) x = -x.get<double>();
   std::ofstream out(in.path, std::ios::binary);
   int k = 0;
-  for (int c = 0; c < copies; ++c)
+  for (int c = 0; c < copies; ++c) {
+    out << separating.dump() << "\n";
+    in.cases.push_back(separating.dump()), in.files.push_back({}), ++in.bad;
     for (const fs::path& f : case_files()) {
       const std::string line = json::parse(slurp(f)).dump();
       out << line << "\n";
@@ -60,6 +69,7 @@ Input make_input(const fs::path& dir, int copies) {
         in.cases.push_back(""), in.files.push_back({});
       }
     }
+  }
   return in;
 }
 
@@ -92,23 +102,21 @@ std::vector<std::string> lines_of(const std::string& text) {
   return lines;
 }
 
-}  // namespace
+struct Compared {
+  int documents = 0, errors = 0;
+};
 
-TEST_CASE("batch answers each case line with solve's document or solve's error, in order, at any --jobs", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-{}", ::getpid());
-  fs::create_directories(dir);
-  const Input in = make_input(dir, 1);
-  // A lone malformed file for solve's error text.
-  const Run one = run_argv({"batch", in.path.string(), "--jobs", "1"});
-  INFO(one.err);
-  CHECK(one.status == 1);  // malformed rows were rejected, after every row was written
-  const auto rows = lines_of(one.out);
-  REQUIRE(rows.size() == static_cast<std::size_t>(in.good + in.bad));
-  CHECK(one.err.find(fmt::format("{} rows read, {} solved, {} rejected", in.good + in.bad, in.good, in.bad)) !=
-        std::string::npos);
-
+// Row by row against solve with the same options: the document with "line" added, the same digits, or
+// the error record with the problem solve prints for the same text.
+Compared compare_with_solve(const Input& in, const std::vector<std::string>& rows, const fs::path& dir,
+                            const std::vector<std::string>& options) {
+  Compared n;
   std::size_t row = 0;
-  int compared = 0, errors = 0;
+  const auto solve = [&](const fs::path& f) {
+    std::vector<std::string> args = {"solve", f.string(), "--format", "json"};
+    args.insert(args.end(), options.begin(), options.end());
+    return run_argv(args);
+  };
   for (std::size_t line = 0; line < in.cases.size(); ++line) {
     if (in.cases[line].empty()) continue;  // blank: no row
     const json got = json::parse(rows.at(row++));
@@ -117,14 +125,14 @@ TEST_CASE("batch answers each case line with solve's document or solve's error, 
       // solve on the same text: "impact3d: error: FILE: $.path: problem"
       const fs::path bad = dir / "bad.json";
       std::ofstream(bad, std::ios::binary) << in.cases[line];
-      const Run s = run_argv({"solve", bad.string(), "--format", "json"});
+      const Run s = solve(bad);
       CHECK(s.status == 1);
       CHECK(s.err == fmt::format("impact3d: error: {}: {}\n", bad.string(), got.at("error").get<std::string>()));
       CHECK(got.size() == 2);
-      ++errors;
+      ++n.errors;
       continue;
     }
-    const Run s = run_argv({"solve", in.files[line].string(), "--format", "json"});
+    const Run s = solve(in.files[line]);
     REQUIRE(s.status == 0);
     json expected = json::parse(s.out);
     json g = got;
@@ -134,12 +142,31 @@ TEST_CASE("batch answers each case line with solve's document or solve's error, 
     const std::string prefix = fmt::format("{{\"line\": {}, ", line + 1);
     REQUIRE(rows[row - 1].rfind(prefix, 0) == 0);
     CHECK(tokens("{" + rows[row - 1].substr(prefix.size())) == tokens(s.out));
-    ++compared;
+    ++n.documents;
   }
-  CHECK(compared == in.good);
-  CHECK(errors == in.bad);
-  CHECK(compared >= 20);
-  CHECK(errors >= 7);
+  CHECK(row == rows.size());
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("batch answers each case line with solve's document or solve's error, in order, at any --jobs", "[batch]") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-{}", ::getpid());
+  fs::create_directories(dir);
+  const Input in = make_input(dir, 1);
+  const Run one = run_argv({"batch", in.path.string(), "--jobs", "1"});
+  INFO(one.err);
+  CHECK(one.status == 1);  // malformed rows were rejected, after every row was written
+  const auto rows = lines_of(one.out);
+  REQUIRE(rows.size() == static_cast<std::size_t>(in.good + in.bad));
+  CHECK(one.err.find(fmt::format("{} rows read, {} solved, {} rejected", in.good + in.bad, in.good, in.bad)) !=
+        std::string::npos);
+
+  const Compared n = compare_with_solve(in, rows, dir, {});
+  CHECK(n.documents == in.good);
+  CHECK(n.errors == in.bad);
+  CHECK(n.documents >= 20);
+  CHECK(n.errors >= 8);  // the malformed rows and the one that does not approach
 
   // Order and content at other --jobs, and from standard input.
   for (const char* jobs : {"2", "3", "7"}) {
@@ -153,6 +180,77 @@ TEST_CASE("batch answers each case line with solve's document or solve's error, 
   const Run to_file = run_argv({"batch", in.path.string(), "-o", out_file.string()});
   CHECK(to_file.out.empty());
   CHECK(slurp(out_file) == one.out);
+  fs::remove_all(dir);
+}
+
+// The rows are read, solved and written in blocks of 2048 (cli/src/batch.cpp): the order must hold across
+// them, whichever thread solved which block.
+TEST_CASE("batch keeps the input's order across blocks at any --jobs", "[batch]") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-blocks-{}", ::getpid());
+  fs::create_directories(dir);
+  const Input in = make_input(dir, 110);
+  REQUIRE(in.good + in.bad > 2 * 2048 + 1);  // three blocks at least
+  std::vector<std::string> names;  // of each line's case, by line
+  for (const fs::path& f : in.files)
+    names.push_back(f.empty() ? "" : json::parse(slurp(f)).at("name").get<std::string>());
+  const Run one = run_argv({"batch", in.path.string(), "--jobs", "1"}, "", 120);
+  CHECK(one.status == 1);
+  CHECK(one.err.find(fmt::format("{} rows read, {} solved, {} rejected", in.good + in.bad, in.good, in.bad)) !=
+        std::string::npos);
+  const auto rows = lines_of(one.out);
+  REQUIRE(rows.size() == static_cast<std::size_t>(in.good + in.bad));
+  std::size_t row = 0;
+  int checked = 0;
+  for (std::size_t line = 0; line < in.cases.size(); ++line) {
+    if (in.cases[line].empty()) continue;
+    const json got = json::parse(rows[row++]);
+    REQUIRE(got.at("line") == line + 1);
+    if (names[line].empty())
+      CHECK(got.contains("error"));
+    else
+      CHECK(got.at("name") == names[line]);
+    ++checked;
+  }
+  CHECK(checked == in.good + in.bad);
+  for (const char* jobs : {"2", "3"}) {
+    const Run r = run_argv({"batch", in.path.string(), "--jobs", jobs}, "", 120);
+    CHECK(r.status == 1);
+    CHECK(r.out == one.out);
+  }
+  fs::remove_all(dir);
+}
+
+// --precision applies to every row: each floating precision the double tests above do not cover, row
+// by row against solve at that precision (exact is compared in the CSV test below).
+TEST_CASE("batch at long double, float128, 50 and 100 digits answers each row as solve does", "[batch]") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-precision-{}", ::getpid());
+  fs::create_directories(dir);
+  Input in;
+  in.path = dir / "cases.jsonl";
+  {
+    fs::create_directories(dir / "all");
+    const Input all = make_input(dir / "all", 1);  // its first 12 lines: the separating case, cases, malformed rows
+    std::ofstream out(in.path, std::ios::binary);
+    for (std::size_t line = 0; line < 12; ++line) {
+      out << all.cases[line] << "\n";
+      in.cases.push_back(all.cases[line]), in.files.push_back(all.files[line]);
+      if (all.cases[line].empty()) continue;
+      ++(all.files[line].empty() ? in.bad : in.good);
+    }
+  }
+  REQUIRE(in.good >= 8);
+  REQUIRE(in.bad >= 3);
+  int compared = 0;
+  for (const char* precision : {"long-double", "float128", "50", "100"}) {
+    INFO(precision);
+    const Run r = run_argv({"batch", in.path.string(), "--precision", precision, "--jobs", "2"}, "", 120);
+    CHECK(r.status == 1);
+    const Compared n = compare_with_solve(in, lines_of(r.out), dir, {"--precision", precision});
+    CHECK(n.documents == in.good);
+    CHECK(n.errors == in.bad);
+    ++compared;
+  }
+  CHECK(compared == 4);
   fs::remove_all(dir);
 }
 

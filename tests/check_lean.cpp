@@ -6,6 +6,8 @@
 // singular system) become a status, and no case allocates.
 #include <catch2/catch.hpp>
 
+#include <array>
+
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -70,9 +72,12 @@ bool same(const std::optional<T>& a, const std::optional<T>& b) {
   return a.has_value() == b.has_value() && (!a || *a == *b || (*a != *a && *b != *b));
 }
 
-// One scene and strategy both ways; true when a solution was compared.
+// How many solutions of each Regime were compared.
+using RegimeCounts = std::array<int, 4>;
+
+// One scene and strategy both ways; true when a solution was compared (counted by its regime).
 template <typename T>
-bool compare(const Scene<T>& s, const Strategy<T>& st, Engine engine) {
+bool compare(const Scene<T>& s, const Strategy<T>& st, Engine engine, RegimeCounts* regimes = nullptr) {
   const LeanSolution<T> lean = solve_lean(s, st, Want::velocities, engine);
   Analysis<T> a;
   try {
@@ -107,6 +112,7 @@ bool compare(const Scene<T>& s, const Strategy<T>& st, Engine engine) {
   const LeanSolution<T> alone = solve_lean(s, st, Want::impulse, engine);
   CHECK(alone.impulse.P_C == imp.P_C);
   CHECK((alone.warnings | warning_bit(WarningCode::not_finite)) == (lean.warnings | warning_bit(WarningCode::not_finite)));
+  if (regimes) ++(*regimes)[static_cast<std::size_t>(imp.regime)];
   return true;
 }
 
@@ -117,13 +123,14 @@ TEMPLATE_TEST_CASE("solve_lean gives analyze's impulse, ratios, velocities and w
   std::mt19937_64 g(20261121);
   std::uniform_real_distribution<double> u(0, 1);
   int compared = 0, undecided = 0, not_approaching = 0;
+  RegimeCounts regimes{};
   for (int c = 0; c < 150; ++c) {
     Scene<double> s = random_scene(g);
     if (c % 10 == 9)  // the bodies separating at the impulse centre: a status, not an exception
       for (auto& b : s.body) b.v_W = -b.v_W, b.w_B = -b.w_B;
     const Scene<TestType> t = cast_scene<TestType>(s);
     for (const Strategy<double>& st : every_strategy(0.05 + 1.2 * u(g)))
-      for (Engine e : kEngines) compared += compare(t, cast_strategy<TestType>(st), e);
+      for (Engine e : kEngines) compared += compare(t, cast_strategy<TestType>(st), e, &regimes);
     if (c % 10 == 9) {
       ++not_approaching;
       CHECK(solve_lean(t, cast_strategy<TestType>(every_strategy(0.5)[0])).status == Status::not_approaching);
@@ -145,6 +152,11 @@ TEMPLATE_TEST_CASE("solve_lean gives analyze's impulse, ratios, velocities and w
   CHECK(not_approaching == 15);
   CHECK(compared == 135 * 12 * 2);
   CHECK(undecided == 135 * 2);
+  // Every regime was among them: pc-crash's full and sliding, Wach's capped and sliding, Brach's as given.
+  INFO("full " << regimes[0] << ", sliding " << regimes[1] << ", capped " << regimes[2] << ", as given " << regimes[3]);
+  for (int n : regimes) CHECK(n > 0);
+  CHECK(regimes[0] + regimes[1] + regimes[2] + regimes[3] == 135 * 10 * 2);
+  CHECK(regimes[3] == 135 * 4 * 2);
 }
 
 TEMPLATE_TEST_CASE("solve_lean decides as analyze does on both sides of the undecided band, and on ill-conditioned K",

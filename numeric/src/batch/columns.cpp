@@ -1,11 +1,12 @@
 // The batch entry points: the widest lane kernel this CPU runs, then the scalar path (solve_lean) for the
-// tail of the range and for every row the lanes left to it.
+// tail of the range and for every row the lanes left to it, with the same strategy.
 #include "impact3d/numeric/batch/columns.hpp"
 
 #include <atomic>
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "impact3d/numeric/lean.hpp"
@@ -15,21 +16,21 @@ namespace impact3d::batch {
 
 namespace {
 
-using Run = std::size_t (*)(const CollisionColumns&, const ImpulseColumns&, std::size_t, std::size_t);
-
-using SinCosRun = std::size_t (*)(const double*, double*, double*, std::size_t);
-
 struct Kernel {
   const char* name;
   std::size_t width;
-  Run run;
-  SinCosRun sin_cos;
+  std::size_t (*pc_crash)(const CollisionColumns&, const ImpulseColumns&, std::size_t, std::size_t);
+  std::size_t (*wach)(const CollisionColumns&, bool, const ImpulseColumns&, std::size_t, std::size_t);
+  std::size_t (*brach)(const CollisionColumns&, const double*, const double*, const ImpulseColumns&, std::size_t, std::size_t);
+  std::size_t (*sin_cos)(const double*, double*, double*, std::size_t);
 };
 
 // Widest first.
-const Kernel kKernels[] = {{"avx512f", 8, lanes::run_avx512f, lanes::sin_cos_avx512f},
-                           {"avx2+fma", 4, lanes::run_avx2_fma, lanes::sin_cos_avx2_fma},
-                           {"sse2", 2, lanes::run_sse2, lanes::sin_cos_sse2}};
+#define IMPACT3D_KERNEL_(name, text, width) \
+  {text, width, lanes::pc_crash_##name, lanes::wach_##name, lanes::brach_##name, lanes::sin_cos_##name}
+const Kernel kKernels[] = {IMPACT3D_KERNEL_(avx512f, "avx512f", 8), IMPACT3D_KERNEL_(avx2_fma, "avx2+fma", 4),
+                           IMPACT3D_KERNEL_(sse2, "sse2", 2)};
+#undef IMPACT3D_KERNEL_
 
 // GCC's CPU test, which also asks the OS (XGETBV) whether it saves the wide registers: a CPU that has
 // AVX-512 under a kernel or hypervisor that leaves it off must not run the wide kernel. (xsimd 8's own
@@ -52,9 +53,9 @@ std::atomic<const Kernel*>& chosen() {
 
 const Kernel& kernel() { return *chosen().load(); }
 
-void solve_row(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i) {
+void solve_row(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i, const Strategy<double>& strategy) {
   const Scene<double> s = scene_of(row_of(in, i));
-  const LeanSolution<double> r = solve_lean(s, Strategy<double>(PcCrash<double>{in.mu[i]}));
+  const LeanSolution<double> r = solve_lean(s, strategy);
   const bool solved = r.status == Status::solved;
   for (int k = 0; k < 3; ++k) out.P_C[k][i] = solved ? r.impulse.P_C(k) : std::numeric_limits<double>::quiet_NaN();
   out.status[i] = static_cast<std::uint8_t>(r.status);
@@ -103,13 +104,40 @@ RawCollision<double> row_of(const CollisionColumns& in, std::size_t i) {
   return c;
 }
 
-std::size_t pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end) {
-  const std::size_t lanes_end = kernel().run(in, out, begin, end);
+namespace {
+
+// The rows the lanes did not decide (from lanes_end to end, and those marked kDeferred before it) on
+// the scalar path, with row i's strategy; how many.
+template <typename StrategyOf>
+std::size_t finish(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t lanes_end,
+                   std::size_t end, StrategyOf strategy_of) {
   std::size_t scalar = end - lanes_end;
   for (std::size_t i = begin; i < lanes_end; ++i)
-    if (out.status[i] == lanes::kDeferred) solve_row(in, out, i), ++scalar;
-  for (std::size_t i = lanes_end; i < end; ++i) solve_row(in, out, i);
+    if (out.status[i] == lanes::kDeferred) solve_row(in, out, i, strategy_of(i)), ++scalar;
+  for (std::size_t i = lanes_end; i < end; ++i) solve_row(in, out, i, strategy_of(i));
   return scalar;
+}
+
+}  // namespace
+
+std::size_t pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end) {
+  return finish(in, out, begin, kernel().pc_crash(in, out, begin, end), end,
+                [&](std::size_t i) { return Strategy<double>(PcCrash<double>{in.mu[i]}); });
+}
+
+std::size_t wach_columns(const CollisionColumns& in, WachLimit limit, const ImpulseColumns& out, std::size_t begin,
+                         std::size_t end) {
+  return finish(in, out, begin, kernel().wach(in, limit == WachLimit::cir, out, begin, end), end,
+                [&](std::size_t i) { return Strategy<double>(Wach<double>{in.mu[i], limit}); });
+}
+
+std::size_t brach_columns(const CollisionColumns& in, const double* mu_t, const double* mu_z, const ImpulseColumns& out,
+                          std::size_t begin, std::size_t end) {
+  const auto given = [](const double* column, std::size_t i) {
+    return column ? std::optional<double>(column[i]) : std::optional<double>();
+  };
+  return finish(in, out, begin, kernel().brach(in, mu_t, mu_z, out, begin, end), end,
+                [&](std::size_t i) { return Strategy<double>(Brach<double>{given(mu_t, i), given(mu_z, i)}); });
 }
 
 void sin_cos_deg_columns(const double* deg, double* s, double* c, std::size_t n) {

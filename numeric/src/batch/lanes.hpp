@@ -1,4 +1,5 @@
-// pc-crash on one group of SIMD lanes, through the generated kernels instantiated on xsimd batches.
+// pc-crash, Wach and Brach on one group of SIMD lanes, through the generated kernels instantiated on
+// xsimd batches.
 // Included only by lanes_arch.cpp, which CMake compiles once per instruction set: nothing here may
 // instantiate code shared with other translation units (only batch types and raw pointers), so that no
 // wider instruction leaks into code the whole program links.
@@ -12,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include "impact3d/generated/brach.hpp"
 #include "impact3d/generated/coefficient_matrix.hpp"
 #include "impact3d/generated/full_impact.hpp"
 #include "impact3d/generated/solution_plane.hpp"
@@ -146,6 +148,92 @@ V3<B> v_Ic(const Body<B>& b) {
   return out;
 }
 
+// What every strategy starts from, as the scalar path's Problem (make_problem, bounded): m', K, V_ri, and
+// the cheap bounds of kappa(K) and of the amplification, with the result bound they give.
+template <typename B>
+struct LaneProblem {
+  B m_prime, e, kappa, bound;  // bound: rounding::relative_bound(amplification) times the quotient's factor
+  M3<B> K;
+  V3<B> V;  // V_ri, contact axes
+  typename B::batch_bool_type doubt;  // not approaching, m' or K not finite, or the rounding not trusted
+};
+
+template <typename B>
+LaneProblem<B> problem(const CollisionColumns& in, std::size_t i) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const B zero(0.0), one(1.0), inf(std::numeric_limits<double>::infinity());
+  LaneProblem<B> p;
+  const Body<B> b0 = load_body<B>(in.vehicle[0], i), b1 = load_body<B>(in.vehicle[1], i);
+  const M3<B> R_WC = rotation(B::load_unaligned(in.normal_yaw_deg + i), B::load_unaligned(in.normal_pitch_deg + i),
+                              B::load_unaligned(in.tangent_roll_deg + i));
+  p.e = B::load_unaligned(in.restitution + i);
+  p.m_prime = b0.mass * b1.mass / (b0.mass + b1.mass);
+  p.K = generated::coefficient_matrix(p.m_prime, b0.J, b1.J, b0.r, b1.r, transpose_times(R_WC, b0.R_WB),
+                                      transpose_times(R_WC, b1.R_WB));
+  const V3<B> v0 = v_Ic(b0), v1 = v_Ic(b1);
+  V3<B> dv;
+  for (int k = 0; k < 3; ++k) dv(k) = v1(k) - v0(k);
+  for (int k = 0; k < 3; ++k) p.V(k) = R_WC(0, k) * dv(0) + R_WC(1, k) * dv(1) + R_WC(2, k) * dv(2);
+
+  // Amplification bound (rounding.hpp): kappa(K) cond(J) max(1, (|v_IC1| + |v_IC2|) / V_rn), bounded.
+  const B cond_J = xsimd::max(spd_condition_bound(b0.J), spd_condition_bound(b1.J));
+  p.kappa = spd_condition_bound(p.K);
+  const B cancellation = xsimd::max(one, (norm(v0) + norm(v1)) / p.V(0));
+  B amplification = p.kappa * cond_J * cancellation;
+  amplification = xsimd::select(xsimd::isfinite(amplification) && amplification > zero, amplification, inf);
+  // The rounding bound of rounding.hpp with the bounded amplification.
+  const B quotient = one + xsimd::hypot(p.V(1), p.V(2)) / p.V(0);
+  p.bound = B(32.0 * eps) * amplification * quotient;
+  p.doubt = !(p.V(0) > zero) || !xsimd::isfinite(p.K(0, 0)) || !xsimd::isfinite(p.m_prime) || !(p.bound <= B(1e-6 / 2));
+  return p;
+}
+
+template <typename B>
+typename B::batch_bool_type all_finite(const V3<B>& v) {
+  return xsimd::isfinite(v(0)) && xsimd::isfinite(v(1)) && xsimd::isfinite(v(2));
+}
+
+// Thrice a bound: the scalar path's own test (once) and the difference between the lane's value and the
+// scalar path's, up to agreement_bound (twice).
+template <typename B>
+typename B::batch_bool_type within_thrice(const B& x, const B& bound) {
+  return xsimd::abs(x) <= B(3.0) * bound;
+}
+
+// A warning no lane of this strategy gives.
+template <typename B>
+typename B::batch_bool_type never() {
+  return typename B::batch_bool_type(false);
+}
+
+// The rows' impulses, and for the rows not deferred their regime (a Regime's value on each lane) and
+// their warnings: a tensile normal impulse, a negative ratio.
+template <typename B>
+void store(const ImpulseColumns& out, std::size_t i, const V3<B>& P, const B& regime,
+           const typename B::batch_bool_type& deferred, const typename B::batch_bool_type& tensile,
+           const typename B::batch_bool_type& negative) {
+  const B zero(0.0), one(1.0);
+  for (int k = 0; k < 3; ++k) P(k).store_unaligned(out.P_C[k] + i);
+  alignas(64) double regime_lane[B::size], deferred_lane[B::size], tensile_lane[B::size], negative_lane[B::size];
+  regime.store_aligned(regime_lane);
+  xsimd::select(deferred, one, zero).store_aligned(deferred_lane);
+  xsimd::select(tensile, one, zero).store_aligned(tensile_lane);
+  xsimd::select(negative, one, zero).store_aligned(negative_lane);
+  constexpr WarningSet kTensile = warning_bit(WarningCode::tensile_normal_impulse);
+  constexpr WarningSet kNegative = warning_bit(WarningCode::negative_ratio);
+  for (std::size_t l = 0; l < B::size; ++l) {
+    out.status[i + l] = deferred_lane[l] != 0.0 ? kDeferred : std::uint8_t(0);
+    out.regime[i + l] = static_cast<std::uint8_t>(regime_lane[l]);
+    out.warnings[i + l] =
+        (tensile_lane[l] != 0.0 ? kTensile : WarningSet(0)) | (negative_lane[l] != 0.0 ? kNegative : WarningSet(0));
+  }
+}
+
+template <typename B>
+B regime_value(Regime r) {
+  return B(static_cast<double>(static_cast<int>(r)));
+}
+
 // Rows [i, i + B::size) of `in`: impulses, regimes and warnings of the rows decided on the lanes, status
 // kDeferred for the others.
 // Flattened: everything it calls is inlined, so that the independent chains (nine sines and cosines,
@@ -154,67 +242,112 @@ template <typename B>
 [[gnu::flatten]] void pc_crash(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i) {
   using Mask = typename B::batch_bool_type;
   constexpr double eps = std::numeric_limits<double>::epsilon();
-  const B zero(0.0), one(1.0), inf(std::numeric_limits<double>::infinity());
-  const Body<B> b0 = load_body<B>(in.vehicle[0], i), b1 = load_body<B>(in.vehicle[1], i);
-  const M3<B> R_WC = rotation(B::load_unaligned(in.normal_yaw_deg + i), B::load_unaligned(in.normal_pitch_deg + i),
-                              B::load_unaligned(in.tangent_roll_deg + i));
-  const B e = B::load_unaligned(in.restitution + i), mu = B::load_unaligned(in.mu + i);
+  const B zero(0.0), three(3.0);
+  const LaneProblem<B> p = problem<B>(in, i);
+  const M3<B>& K = p.K;
+  const V3<B>& V_ri = p.V;
+  const B mu = B::load_unaligned(in.mu + i);
 
-  const B m_prime = b0.mass * b1.mass / (b0.mass + b1.mass);
-  const M3<B> K = generated::coefficient_matrix(m_prime, b0.J, b1.J, b0.r, b1.r, transpose_times(R_WC, b0.R_WB),
-                                                transpose_times(R_WC, b1.R_WB));
-  const V3<B> v0 = v_Ic(b0), v1 = v_Ic(b1);
-  V3<B> dv;
-  for (int k = 0; k < 3; ++k) dv(k) = v1(k) - v0(k);
-  V3<B> V_ri;
-  for (int k = 0; k < 3; ++k) V_ri(k) = R_WC(0, k) * dv(0) + R_WC(1, k) * dv(1) + R_WC(2, k) * dv(2);
-
-  // Amplification bound (rounding.hpp): kappa(K) cond(J) max(1, (|v_IC1| + |v_IC2|) / V_rn), bounded.
-  const B cond_J = xsimd::max(spd_condition_bound(b0.J), spd_condition_bound(b1.J));
-  const B kappa = spd_condition_bound(K);
-  const B cancellation = xsimd::max(one, (norm(v0) + norm(v1)) / V_ri(0));
-  B amplification = kappa * cond_J * cancellation;
-  amplification = xsimd::select(xsimd::isfinite(amplification) && amplification > zero, amplification, inf);
-
-  const V3<B> P_fi = generated::full_impact(K, m_prime, e, V_ri);
+  const V3<B> P_fi = generated::full_impact(K, p.m_prime, p.e, V_ri);
   const B P_cp = xsimd::hypot(P_fi(1), P_fi(2));
   const B gir = P_cp / P_fi(0);
   // phi_FI's plane, and whether its direction could be lost in rounding (Problem::negligible, bounded).
   const B scale = norm(P_fi);
-  // Thrice the bound: the scalar path's own test (once) and the difference between the lane's value and
-  // the scalar path's, up to agreement_bound (twice).
-  const B three(3.0);
-  const Mask plane_doubt = P_cp <= three * B(16.0 * eps) * kappa * scale;
+  const Mask plane_doubt = P_cp <= three * B(16.0 * eps) * p.kappa * scale;
   const B c = P_fi(1) / P_cp, s = P_fi(2) / P_cp;
-  const B cir = xsimd::select(e == zero, generated::plane_generalized_ratio(K, V_ri, c, s),
-                              generated::plane_critical_ratio(K, e, V_ri, c, s));
-  const V3<B> P_sl = generated::plane_impulse(K, m_prime, e, V_ri, c, s, mu);
+  const B cir = xsimd::select(p.e == zero, generated::plane_generalized_ratio(K, V_ri, c, s),
+                              generated::plane_critical_ratio(K, p.e, V_ri, c, s));
+  const V3<B> P_sl = generated::plane_impulse(K, p.m_prime, p.e, V_ri, c, s, mu);
   const Mask full = mu >= gir;
   V3<B> P;
   for (int k = 0; k < 3; ++k) P(k) = xsimd::select(full, P_fi(k), P_sl(k));
 
-  // The rounding bound of rounding.hpp with the bounded amplification, and the decisions taken on it.
-  const B quotient = one + xsimd::hypot(V_ri(1), V_ri(2)) / V_ri(0);
-  const B bound = B(32.0 * eps) * amplification * quotient;
-  const Mask undecided_doubt = xsimd::abs(mu - gir) <= three * bound * (one + xsimd::abs(gir));
-  const Mask rounding_doubt = !(bound <= B(1e-6 / 2));
-  const Mask finite = xsimd::isfinite(P(0)) && xsimd::isfinite(P(1)) && xsimd::isfinite(P(2)) && xsimd::isfinite(gir) &&
-                      xsimd::isfinite(cir) && xsimd::isfinite(P_fi(0)) && xsimd::isfinite(P_fi(1)) &&
-                      xsimd::isfinite(P_fi(2)) && xsimd::isfinite(K(0, 0)) && xsimd::isfinite(m_prime);
-  const Mask deferred = !(V_ri(0) > zero) || !finite || plane_doubt || undecided_doubt || rounding_doubt;
+  // The decision on the GIR, within the rounding bound of rounding.hpp.
+  const Mask undecided_doubt = within_thrice(mu - gir, p.bound * (B(1.0) + xsimd::abs(gir)));
+  const Mask finite = all_finite(P) && xsimd::isfinite(gir) && xsimd::isfinite(cir) && all_finite(P_fi);
+  const Mask deferred = p.doubt || !finite || plane_doubt || undecided_doubt;
+  store(out, i, P, xsimd::select(full, regime_value<B>(Regime::full), regime_value<B>(Regime::sliding)), deferred,
+        !(P(0) > zero), never<B>());
+}
 
-  for (int k = 0; k < 3; ++k) P(k).store_unaligned(out.P_C[k] + i);
-  alignas(64) double full_lane[B::size], deferred_lane[B::size], tensile_lane[B::size];
-  xsimd::select(full, one, zero).store_aligned(full_lane);
-  xsimd::select(deferred, one, zero).store_aligned(deferred_lane);
-  xsimd::select(P(0) > zero, zero, one).store_aligned(tensile_lane);
-  constexpr std::uint8_t kFull = static_cast<std::uint8_t>(Regime::full), kSliding = static_cast<std::uint8_t>(Regime::sliding);
-  constexpr WarningSet kTensile = warning_bit(WarningCode::tensile_normal_impulse);
-  for (std::size_t l = 0; l < B::size; ++l) {
-    out.status[i + l] = deferred_lane[l] != 0.0 ? kDeferred : std::uint8_t(0);
-    out.regime[i + l] = full_lane[l] != 0.0 ? kFull : kSliding;
-    out.warnings[i + l] = tensile_lane[l] != 0.0 ? kTensile : WarningSet(0);
+// The conditions Wach's and Brach's rows share with solve_lean beyond the problem's: the maximum-energy-
+// loss impulse (eps = 0) is not singular, K and V_ri are finite, and the sign of the normal impulse, on
+// which its tensile warning rests, is clear: that of the numerator m'(1 + eps) V_rn, a product of the
+// inputs, times that of the denominator `den`, which must lie outside thrice the bound of zero relative
+// to `den_size`, the sum of its terms' magnitudes.
+template <typename B>
+typename B::batch_bool_type shared_doubt(const LaneProblem<B>& p, const V3<B>& P, const B& den, const B& den_size) {
+  const V3<B> P_0 = generated::full_impact(p.K, p.m_prime, B(0.0), p.V);
+  typename B::batch_bool_type finite = all_finite(p.V) && all_finite(P_0) && all_finite(P);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) finite = finite && xsimd::isfinite(p.K(r, c));
+  return p.doubt || !finite || within_thrice(den, p.bound * den_size);
+}
+
+
+// Wach (strategies/wach.hpp): the plane of the initial sliding velocity (eq 21), mu capped at its CIR
+// (at_cir) or GIR.
+template <typename B>
+[[gnu::flatten]] void wach(const CollisionColumns& in, bool at_cir, const ImpulseColumns& out, std::size_t i) {
+  using Mask = typename B::batch_bool_type;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const B zero(0.0), one(1.0), three(3.0);
+  const LaneProblem<B> p = problem<B>(in, i);
+  const B mu = B::load_unaligned(in.mu + i);
+  // The plane, and whether its direction could be lost in rounding (Problem::negligible, bounded).
+  const B length = xsimd::hypot(p.V(1), p.V(2));
+  const Mask plane_doubt = length <= three * B(16.0 * eps) * p.kappa * norm(p.V);
+  const B c = p.V(1) / length, s = p.V(2) / length;
+  const B gir = generated::plane_generalized_ratio(p.K, p.V, c, s);
+  const B cir = xsimd::select(p.e == zero, gir, generated::plane_critical_ratio(p.K, p.e, p.V, c, s));
+  const B limit = at_cir ? cir : gir;
+  const Mask undecided_doubt = within_thrice(mu - limit, p.bound * (one + xsimd::abs(limit)));
+  const Mask capped = mu >= limit;
+  const B used = xsimd::select(capped, limit, mu);
+  // A negative ratio carries a warning (strategies/limits.hpp); its sign is the scalar path's to decide
+  // where it lies within the bound of zero.
+  const Mask sign_doubt = within_thrice(used, p.bound * (one + xsimd::abs(used)));
+  const V3<B> P = generated::plane_impulse(p.K, p.m_prime, p.e, p.V, c, s, used);
+  const B pb1 = used * (p.K(0, 1) * c + p.K(0, 2) * s);
+  const Mask finite = xsimd::isfinite(gir) && xsimd::isfinite(cir);
+  const Mask deferred = shared_doubt(p, P, p.K(0, 0) + pb1, xsimd::abs(p.K(0, 0)) + xsimd::abs(pb1)) || !finite ||
+                        plane_doubt || undecided_doubt || sign_doubt;
+  store(out, i, P, xsimd::select(capped, regime_value<B>(Regime::capped), regime_value<B>(Regime::sliding)), deferred,
+        !(P(0) > zero), used < zero);
+}
+
+// Brach (strategies/brach.hpp): the ratios as given, a null column meaning critical on every row (eqs
+// 24-27); the critical ratios it reports are formed too, since a singular or undefined one is a status
+// or a warning.
+template <typename B>
+[[gnu::flatten]] void brach(const CollisionColumns& in, const double* mu_t, const double* mu_z, const ImpulseColumns& out,
+                            std::size_t i) {
+  using Mask = typename B::batch_bool_type;
+  const B zero(0.0);
+  const LaneProblem<B> p = problem<B>(in, i);
+  B t, z;
+  if (mu_t && mu_z) {
+    t = B::load_unaligned(mu_t + i), z = B::load_unaligned(mu_z + i);
+  } else if (mu_z) {  // eq 25
+    z = B::load_unaligned(mu_z + i), t = generated::brach_critical_t(p.K, p.e, p.V, z);
+  } else if (mu_t) {  // eq 26
+    t = B::load_unaligned(mu_t + i), z = generated::brach_critical_z(p.K, p.e, p.V, t);
+  } else {  // eq 27
+    const Eigen::Matrix<B, 2, 1> both = generated::brach_critical_both(p.K, p.e, p.V);
+    t = both(0), z = both(1);
   }
+  const V3<B> P = generated::brach_impulse(p.K, p.m_prime, p.e, p.V, t, z);
+  const B ratio_t = P(1) / P(0), ratio_z = P(2) / P(0);
+  const B t_c = generated::brach_critical_t(p.K, p.e, p.V, ratio_z), z_c = generated::brach_critical_z(p.K, p.e, p.V, ratio_t);
+  const V3<B> P_tc = generated::brach_impulse(p.K, p.m_prime, p.e, p.V, t_c, ratio_z);
+  const V3<B> P_zc = generated::brach_impulse(p.K, p.m_prime, p.e, p.V, ratio_t, z_c);
+  const Mask finite = xsimd::isfinite(t) && xsimd::isfinite(z) && xsimd::isfinite(ratio_t) && xsimd::isfinite(ratio_z) &&
+                      xsimd::isfinite(t_c) && xsimd::isfinite(z_c) && all_finite(P_tc) && all_finite(P_zc) &&
+                      xsimd::isfinite(P_tc(1) / P_tc(0)) && xsimd::isfinite(P_zc(2) / P_zc(0));
+  const B tt = p.K(0, 1) * t, zz = p.K(0, 2) * z;
+  const Mask deferred = shared_doubt(p, P, p.K(0, 0) + tt + zz, xsimd::abs(p.K(0, 0)) + xsimd::abs(tt) + xsimd::abs(zz)) ||
+                        !finite;
+  store(out, i, P, regime_value<B>(Regime::as_given), deferred, !(P(0) > zero), never<B>());
 }
 
 }  // namespace impact3d::batch::lanes

@@ -5,21 +5,36 @@
 
 namespace impact3d::batch::lanes {
 
-#define IMPACT3D_RUN_NAME_(name) run_##name
-#define IMPACT3D_RUN_NAME(name) IMPACT3D_RUN_NAME_(name)
-#define IMPACT3D_SIN_COS_NAME_(name) sin_cos_##name
-#define IMPACT3D_SIN_COS_NAME(name) IMPACT3D_SIN_COS_NAME_(name)
+#define IMPACT3D_LANES_NAME_(what, name) what##_##name
+#define IMPACT3D_LANES_NAME(what, name) IMPACT3D_LANES_NAME_(what, name)
+#define IMPACT3D_SIN_COS_NAME(name) IMPACT3D_LANES_NAME(sin_cos, name)
 
-std::size_t IMPACT3D_RUN_NAME(IMPACT3D_BATCH_ARCH_NAME)(const CollisionColumns& in, const ImpulseColumns& out,
-                                                      std::size_t begin, std::size_t end) {
-  using B = xsimd::batch<double, IMPACT3D_BATCH_ARCH_TYPE>;
+using B = xsimd::batch<double, IMPACT3D_BATCH_ARCH_TYPE>;
+
+std::size_t IMPACT3D_LANES_NAME(pc_crash, IMPACT3D_BATCH_ARCH_NAME)(const CollisionColumns& in, const ImpulseColumns& out,
+                                                                   std::size_t begin, std::size_t end) {
   std::size_t i = begin;
   for (; i + B::size <= end; i += B::size) pc_crash<B>(in, out, i);
   return i;
 }
 
+std::size_t IMPACT3D_LANES_NAME(wach, IMPACT3D_BATCH_ARCH_NAME)(const CollisionColumns& in, bool at_cir,
+                                                               const ImpulseColumns& out, std::size_t begin,
+                                                               std::size_t end) {
+  std::size_t i = begin;
+  for (; i + B::size <= end; i += B::size) wach<B>(in, at_cir, out, i);
+  return i;
+}
+
+std::size_t IMPACT3D_LANES_NAME(brach, IMPACT3D_BATCH_ARCH_NAME)(const CollisionColumns& in, const double* mu_t,
+                                                                const double* mu_z, const ImpulseColumns& out,
+                                                                std::size_t begin, std::size_t end) {
+  std::size_t i = begin;
+  for (; i + B::size <= end; i += B::size) brach<B>(in, mu_t, mu_z, out, i);
+  return i;
+}
+
 std::size_t IMPACT3D_SIN_COS_NAME(IMPACT3D_BATCH_ARCH_NAME)(const double* deg, double* s, double* c, std::size_t n) {
-  using B = xsimd::batch<double, IMPACT3D_BATCH_ARCH_TYPE>;
   std::size_t i = 0;
   for (; i + B::size <= n; i += B::size) {
     const SinCosB<B> r = sin_cos_deg(B::load_unaligned(deg + i));

@@ -15,8 +15,12 @@ inline constexpr std::uint8_t kDeferred = 0xff;
 
 #define IMPACT3D_BATCH_ARCHES(X) X(avx512f, 8) X(avx2_fma, 4) X(sse2, 2)
 
-#define IMPACT3D_DECLARE_LANES_(name, width)                                                                 \
-  std::size_t run_##name(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end); \
+#define IMPACT3D_DECLARE_LANES_(name, width)                                                                        \
+  std::size_t pc_crash_##name(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end); \
+  std::size_t wach_##name(const CollisionColumns& in, bool at_cir, const ImpulseColumns& out, std::size_t begin,        \
+                          std::size_t end);                                                                           \
+  std::size_t brach_##name(const CollisionColumns& in, const double* mu_t, const double* mu_z,                          \
+                           const ImpulseColumns& out, std::size_t begin, std::size_t end);                            \
   std::size_t sin_cos_##name(const double* deg, double* s, double* c, std::size_t n);
 IMPACT3D_BATCH_ARCHES(IMPACT3D_DECLARE_LANES_)
 #undef IMPACT3D_DECLARE_LANES_

@@ -1,15 +1,17 @@
-// Many pc-crash collisions at once, as columns (structure of arrays): the layout SIMD lanes load from,
-// and that NumPy arrays hand over without copying. Each row is a RawCollision (raw_collision.hpp) and a
-// friction coefficient mu; each result row is what solve_lean gives for Want::impulse: P_C, the status,
-// the regime and the warning codes.
+// Many collisions at once, as columns (structure of arrays): the layout SIMD lanes load from, and that
+// NumPy arrays hand over without copying. Each row is a RawCollision (raw_collision.hpp) and a friction
+// coefficient mu; each result row is what solve_lean gives for Want::impulse: P_C, the status, the regime
+// and the warning codes.
 //
-// pc_crash_columns computes rows on SIMD lanes through the generated kernels (the widest instruction set
-// the CPU offers among AVX-512, AVX2 with FMA and SSE2), with the regime as a lane mask. A row whose
-// decision is not clear on the lane (the bodies do not approach, a value is not finite, the plane of
-// phi_FI, the regime or the rounding warning within thrice the cheap rounding bound) is solved by
-// solve_lean instead, so every row gets the scalar path's status, regime and warnings; the impulses of
-// the rows solved on lanes differ from solve_lean's only by the rounding of the vectorized sine and
-// cosine and of fused multiply-adds (tests/check_batch.cpp states and checks the bound).
+// pc_crash_columns, wach_columns and brach_columns compute rows on SIMD lanes through the generated
+// kernels (the widest instruction set the CPU offers among AVX-512, AVX2 with FMA and SSE2), with the
+// regime as a lane mask. A row whose decision is not clear on the lane (the bodies do not approach, a
+// value is not finite, a solution plane, the regime, the sign of a ratio or of the normal impulse, or the
+// rounding warning within thrice the cheap rounding bound; any row that carries a warning other than
+// pc-crash's tensile normal impulse) is solved by solve_lean instead, so every row gets the scalar path's
+// status, regime and warnings; the impulses of the rows solved on lanes differ from solve_lean's only by
+// the rounding of the vectorized sine and cosine and of fused multiply-adds (tests/check_batch.cpp states
+// and checks the bound).
 #pragma once
 
 #include <cstddef>
@@ -61,6 +63,14 @@ bool use_simd(const std::string& name);
 // solved (the tail shorter than a lane group and the rows the lanes left to it). Safe to call on
 // disjoint ranges from several threads.
 std::size_t pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end);
+
+// Wach, mu from in.mu and the cap the same for every row.
+std::size_t wach_columns(const CollisionColumns& in, WachLimit limit, const ImpulseColumns& out, std::size_t begin,
+                         std::size_t end);
+// Brach, each ratio from its column, or critical (eqs 25-27) on every row where the column is null; in.mu
+// is not read.
+std::size_t brach_columns(const CollisionColumns& in, const double* mu_t, const double* mu_z, const ImpulseColumns& out,
+                          std::size_t begin, std::size_t end);
 
 // Row i as a RawCollision and its mu, for the scalar path.
 RawCollision<double> row_of(const CollisionColumns& in, std::size_t i);
