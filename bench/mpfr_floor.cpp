@@ -26,13 +26,23 @@
 
 namespace {
 
-enum Op { kMul, kSqr, kAdd, kSub, kDiv, kSqrt, kFloor, kSinCos, kCopy, kSetInt, kCompare, kOps };
-const char* const kName[kOps] = {"mpfr_mul",   "mpfr_sqr", "mpfr_add",  "mpfr_sub",  "mpfr_div", "mpfr_sqrt",
-                                 "mpfr_floor", "sin_cos",  "mpfr_set (copy)", "mpfr_set_ui/si (constant)", "mpfr_cmp"};
-const bool kArithmetic[kOps] = {true, true, true, true, true, true, true, true, false, false, false};
+enum Op {
+  kMul, kSqr, kAdd, kSub, kDiv, kSqrt, kFloor, kNeg, kAddUi, kSinCos, kMpfrSinCos,  // timed: the floor
+  kCopy,                                                                           // timed, beside it
+  kSetInt, kCompare, kScale, kAtan2, kGetD, kOps                                  // counted
+};
+const char* const kName[kOps] = {"mpfr_mul", "mpfr_sqr", "mpfr_add", "mpfr_sub", "mpfr_div", "mpfr_sqrt", "mpfr_floor",
+                                 "mpfr_neg", "mpfr_add_ui (timed adding 1)", "sin_cos (Arb)",
+                                 "mpfr_sin_cos (where Arb does not decide)", "mpfr_set (copy)",
+                                 "integer constants and zeros", "comparisons", "mpfr_mul_2ui, mpfr_div_2ui", "mpfr_atan2",
+                                 "mpfr_get_d"};
+constexpr int kTimed = kCopy + 1;
 
 bool counting = false, recording = false;
 long calls[kOps] = {};
+// Entry points in progress: MPFR calls its own exported functions through the same symbols, and only the
+// route's calls, the outermost, are counted.
+int depth = 0;
 
 // An operand kept at its own precision.
 struct Kept {
@@ -53,11 +63,21 @@ std::vector<Operands> operands[kOps];
 void note(Op op, mpfr_srcptr a, mpfr_srcptr b) {
   if (!counting) return;
   ++calls[op];
-  if (!recording) return;
+  if (!recording || op >= kTimed) return;
   counting = false;  // keeping them copies them, through the functions below
   operands[op].push_back({std::make_unique<Kept>(a), b ? std::make_unique<Kept>(b) : nullptr});
   counting = true;
 }
+
+// One call of an entry point: noted when it is the route's own.
+struct Call {
+  Call(Op op, mpfr_srcptr a = nullptr, mpfr_srcptr b = nullptr) {
+    if (depth++ == 0) note(op, a, b);
+  }
+  ~Call() { --depth; }
+  Call(const Call&) = delete;
+  Call& operator=(const Call&) = delete;
+};
 
 // The library's own function: resolved at the first call, which may come before this file's statics.
 template <typename F>
@@ -83,63 +103,113 @@ using SetUi = int (*)(mpfr_ptr, unsigned long, mpfr_exp_t, mpfr_rnd_t);
 using SetSi = int (*)(mpfr_ptr, long, mpfr_exp_t, mpfr_rnd_t);
 using Cmp3 = int (*)(mpfr_srcptr, mpfr_srcptr, int);
 using ArbSinCos = void (*)(arb_t, arb_t, const arb_t, slong);
+using SinCos = int (*)(mpfr_ptr, mpfr_ptr, mpfr_srcptr, mpfr_rnd_t);
+using CmpSi = int (*)(mpfr_srcptr, long, mpfr_exp_t);
+using Test2 = int (*)(mpfr_srcptr, mpfr_srcptr);
+using Scale = int (*)(mpfr_ptr, mpfr_srcptr, unsigned long, mpfr_rnd_t);
+using GetD = double (*)(mpfr_srcptr, mpfr_rnd_t);
 IMPACT3D_REAL(mpfr_set4, Set4)
 IMPACT3D_REAL(mpfr_set_ui_2exp, SetUi)
 IMPACT3D_REAL(mpfr_set_si_2exp, SetSi)
 IMPACT3D_REAL(mpfr_cmp3, Cmp3)
 IMPACT3D_REAL(arb_sin_cos, ArbSinCos)
+IMPACT3D_REAL(mpfr_neg, Unary)
+IMPACT3D_REAL(mpfr_sin_cos, SinCos)
+IMPACT3D_REAL(mpfr_cmp_si_2exp, CmpSi)
+IMPACT3D_REAL(mpfr_equal_p, Test2)
+IMPACT3D_REAL(mpfr_mul_2ui, Scale)
+IMPACT3D_REAL(mpfr_div_2ui, Scale)
+IMPACT3D_REAL(mpfr_add_ui, Scale)
+IMPACT3D_REAL(mpfr_atan2, Binary)
+IMPACT3D_REAL(mpfr_get_d, GetD)
 #undef IMPACT3D_REAL
 
 }  // namespace
 
 extern "C" {
 int mpfr_mul(mpfr_ptr r, mpfr_srcptr a, mpfr_srcptr b, mpfr_rnd_t m) {
-  note(kMul, a, b);
+  const Call call(kMul, a, b);
   return real_mpfr_mul()(r, a, b, m);
 }
 int mpfr_add(mpfr_ptr r, mpfr_srcptr a, mpfr_srcptr b, mpfr_rnd_t m) {
-  note(kAdd, a, b);
+  const Call call(kAdd, a, b);
   return real_mpfr_add()(r, a, b, m);
 }
 int mpfr_sub(mpfr_ptr r, mpfr_srcptr a, mpfr_srcptr b, mpfr_rnd_t m) {
-  note(kSub, a, b);
+  const Call call(kSub, a, b);
   return real_mpfr_sub()(r, a, b, m);
 }
 int mpfr_div(mpfr_ptr r, mpfr_srcptr a, mpfr_srcptr b, mpfr_rnd_t m) {
-  note(kDiv, a, b);
+  const Call call(kDiv, a, b);
   return real_mpfr_div()(r, a, b, m);
 }
 int mpfr_sqr(mpfr_ptr r, mpfr_srcptr a, mpfr_rnd_t m) {
-  note(kSqr, a, nullptr);
+  const Call call(kSqr, a);
   return real_mpfr_sqr()(r, a, m);
 }
 int mpfr_sqrt(mpfr_ptr r, mpfr_srcptr a, mpfr_rnd_t m) {
-  note(kSqrt, a, nullptr);
+  const Call call(kSqrt, a);
   return real_mpfr_sqrt()(r, a, m);
 }
 int mpfr_rint(mpfr_ptr r, mpfr_srcptr a, mpfr_rnd_t m) {
-  note(kFloor, a, nullptr);
+  const Call call(kFloor, a);
   return real_mpfr_rint()(r, a, m);
 }
+int mpfr_neg(mpfr_ptr r, mpfr_srcptr a, mpfr_rnd_t m) {
+  const Call call(kNeg, a);
+  return real_mpfr_neg()(r, a, m);
+}
+int mpfr_sin_cos(mpfr_ptr s, mpfr_ptr c, mpfr_srcptr x, mpfr_rnd_t m) {
+  const Call call(kMpfrSinCos, x);
+  return real_mpfr_sin_cos()(s, c, x, m);
+}
 int mpfr_set4(mpfr_ptr r, mpfr_srcptr a, mpfr_rnd_t m, int s) {
-  note(kCopy, a, nullptr);
+  const Call call(kCopy, a);
   return real_mpfr_set4()(r, a, m, s);
 }
 int mpfr_set_ui_2exp(mpfr_ptr r, unsigned long i, mpfr_exp_t e, mpfr_rnd_t m) {
-  if (counting) ++calls[kSetInt];
+  const Call call(kSetInt);
   return real_mpfr_set_ui_2exp()(r, i, e, m);
 }
 int mpfr_set_si_2exp(mpfr_ptr r, long i, mpfr_exp_t e, mpfr_rnd_t m) {
-  if (counting) ++calls[kSetInt];
+  const Call call(kSetInt);
   return real_mpfr_set_si_2exp()(r, i, e, m);
 }
 int mpfr_cmp3(mpfr_srcptr a, mpfr_srcptr b, int s) {
-  if (counting) ++calls[kCompare];
+  const Call call(kCompare);
   return real_mpfr_cmp3()(a, b, s);
+}
+int mpfr_cmp_si_2exp(mpfr_srcptr a, long i, mpfr_exp_t e) {
+  const Call call(kCompare);
+  return real_mpfr_cmp_si_2exp()(a, i, e);
+}
+int mpfr_equal_p(mpfr_srcptr a, mpfr_srcptr b) {
+  const Call call(kCompare);
+  return real_mpfr_equal_p()(a, b);
+}
+int mpfr_mul_2ui(mpfr_ptr r, mpfr_srcptr a, unsigned long i, mpfr_rnd_t m) {
+  const Call call(kScale);
+  return real_mpfr_mul_2ui()(r, a, i, m);
+}
+int mpfr_div_2ui(mpfr_ptr r, mpfr_srcptr a, unsigned long i, mpfr_rnd_t m) {
+  const Call call(kScale);
+  return real_mpfr_div_2ui()(r, a, i, m);
+}
+int mpfr_add_ui(mpfr_ptr r, mpfr_srcptr a, unsigned long i, mpfr_rnd_t m) {
+  const Call call(kAddUi, a);
+  return real_mpfr_add_ui()(r, a, i, m);
+}
+int mpfr_atan2(mpfr_ptr r, mpfr_srcptr a, mpfr_srcptr b, mpfr_rnd_t m) {
+  const Call call(kAtan2);
+  return real_mpfr_atan2()(r, a, b, m);
+}
+double mpfr_get_d(mpfr_srcptr a, mpfr_rnd_t m) {
+  const Call call(kGetD);
+  return real_mpfr_get_d()(a, m);
 }
 // One for each sine-cosine pair (numeric/src/mpfr_sin_cos.cpp), which is what is timed.
 void arb_sin_cos(arb_t s, arb_t c, const arb_t x, slong prec) {
-  if (counting) {
+  if (counting && depth == 0) {
     ++calls[kSinCos];
     if (recording) {
       counting = false;
@@ -172,7 +242,7 @@ double best_ns(Fn&& run, std::size_t n) {
   return best;
 }
 
-// One call of op on each recorded operand (or pair), into a result of the operand's precision. In
+// One call of op on each recorded operand (or pair), into results of the first operand's precision. In
 // groups of 64 operands, each group timed on its own best run: in the route an operand has just been
 // computed and is in the cache, and so it is here (timed across all 30 000 of them at once, the loads
 // from memory doubled the time of an addition).
@@ -215,7 +285,16 @@ double time_op(Op op) {
     case kSqr: return unary(real_mpfr_sqr(), MPFR_RNDN);
     case kSqrt: return unary(real_mpfr_sqrt(), MPFR_RNDN);
     case kFloor: return unary(real_mpfr_rint(), MPFR_RNDD);
+    case kNeg: return unary(real_mpfr_neg(), MPFR_RNDN);
+    case kAddUi: {
+      const Scale f = real_mpfr_add_ui();
+      return time_calls(ops, [f](mpfr_ptr r, mpfr_ptr, mpfr_srcptr a, mpfr_srcptr) { f(r, a, 1, MPFR_RNDN); });
+    }
     case kSinCos: return time_calls(ops, [](mpfr_ptr s, mpfr_ptr c, mpfr_srcptr a, mpfr_srcptr) { mp::sin_cos(s, c, a); });
+    case kMpfrSinCos: {
+      const SinCos f = real_mpfr_sin_cos();
+      return time_calls(ops, [f](mpfr_ptr s, mpfr_ptr c, mpfr_srcptr a, mpfr_srcptr) { f(s, c, a, MPFR_RNDN); });
+    }
     case kCopy: {
       const Set4 f = real_mpfr_set4();
       return time_calls(ops, [f](mpfr_ptr r, mpfr_ptr, mpfr_srcptr a, mpfr_srcptr) { f(r, a, MPFR_RNDN, mpfr_signbit(a) ? -1 : 1); });
@@ -250,16 +329,17 @@ int main() {
   const double n = double(raw.size());
   std::printf("100-digit lean route, raw parameters to the pc-crash impulse: %zu collisions (%d solved), MPFR at %ld bits\n",
               raw.size(), solved, static_cast<long>(mpfr_get_prec(operands[kMul].at(0).a->x)));
-  std::printf("%-28s %10s %10s %12s\n", "operation", "per case", "ns each", "us per case");
-  double floor_us = 0, other_us = 0;
+  std::printf("%-42s %10s %10s %12s\n", "operation", "per case", "ns each", "us per case");
+  double floor_us = 0, copies_us = 0;
   for (int op = 0; op < kOps; ++op) {
+    if (op >= kTimed) {
+      std::printf("%-42s %10.1f %10s %12s\n", kName[op], calls[op] / n, "", "");
+      continue;
+    }
     const double each = time_op(Op(op)), us = calls[op] / n * each / 1000;
-    (kArithmetic[op] ? floor_us : other_us) += us;
-    if (op == kSetInt || op == kCompare)
-      std::printf("%-28s %10.1f %10s %12s\n", kName[op], calls[op] / n, "", "");
-    else
-      std::printf("%-28s %10.1f %10.1f %12.2f\n", kName[op], calls[op] / n, each, us);
+    (op == kCopy ? copies_us : floor_us) += us;
+    std::printf("%-42s %10.1f %10.1f %12.2f\n", kName[op], calls[op] / n, each, us);
   }
   std::printf("arithmetic and sines alone: %.1f us a case; copies %.1f us; the route itself %.1f us\n", floor_us,
-              other_us, route_ns / 1000);
+              copies_us, route_ns / 1000);
 }

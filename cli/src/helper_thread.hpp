@@ -11,6 +11,8 @@
 #include <thread>
 #include <utility>
 
+#include "impact3d/numeric/thread_caches.hpp"
+
 namespace impact3d::cli {
 
 class HelperThread {
@@ -46,6 +48,7 @@ class HelperThread {
 
  private:
   void serve() {
+    const ThreadCaches freed_at_exit;  // a 100-digit row leaves MPFR's caches in this thread
     std::unique_lock lock(mutex_);
     for (;;) {
       wake_.wait(lock, [&] { return busy_ || quit_; });

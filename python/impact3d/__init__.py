@@ -6,7 +6,8 @@ Python.
     result["results"][0]["vehicles"][1]["delta_v_magnitude"]      # m/s for an SI case
 
 - read_case, solve: one case, as `impact3d solve CASE --format json` (docs/case-format.md).
-- solve_batch: pc-crash on many collisions held as NumPy columns, on every core, the GIL released.
+- solve_batch: pc-crash, Wach or Brach on many collisions held as NumPy columns, on every core, the GIL
+  released.
 - montecarlo, sensitivity: many-cases.md's documents, as `impact3d montecarlo` and `impact3d
   sensitivity` print them; montecarlo can also hand every sample over as arrays.
 - reconstruct: pre-impact speeds and other unknowns from post-impact evidence, as `impact3d
@@ -74,9 +75,11 @@ def solve(case, strategies=None, engine="generated", precision="double", units=N
     return _convert.document(_impact3d.solve_json(c, _strategies(strategies), engine, precision, units), precision)
 
 
-def solve_batch(jobs=0, velocities=False, **columns):
-    """pc-crash on many collisions at once, the double precision's generated engine on SIMD lanes
-    (BATCH_SIMD names the instruction set), on `jobs` threads (0: every core) with the GIL released.
+def solve_batch(jobs=0, velocities=False, strategy="pc-crash", limit=None, **columns):
+    """pc-crash, Wach or Brach on many collisions at once, the double precision's generated engine on
+    SIMD lanes (BATCH_SIMD names the instruction set), on `jobs` threads (0: every core) with the GIL
+    released. `strategy` is "pc-crash" (the default), "wach" (`limit` its cap, "cir", the default, or
+    "gir") or "brach".
 
     Columns, in SI units, each a 1-D array (one row per collision) or a number for every row; their
     names are BATCH_COLUMNS, those of the NumPy peer bench/naive/pc_crash.py. For vehicle i = 1, 2:
@@ -85,9 +88,10 @@ def solve_batch(jobs=0, velocities=False, **columns):
         yaw_i, pitch_i, roll_i [deg], body to world (z-y'-x'');
         v0_i, v1_i, v2_i [m/s], the CG velocity in world axes; w0_i, w1_i, w2_i [rad/s], the angular
             velocity in body axes; r0_i, r1_i, r2_i [m], the impulse centre in body axes;
-    and normal_yaw, normal_pitch, tangent_roll [deg] (the contact frame), restitution, mu. Required:
-    mass_i, J00_i, J11_i, J22_i, yaw_i, v0_i, v1_i, r0_i, r1_i, normal_yaw, restitution, mu; the rest
-    default to 0.
+    and normal_yaw, normal_pitch, tangent_roll [deg] (the contact frame), restitution; and the
+    strategy's ratios: mu for pc-crash and Wach, mu_t and mu_z for Brach (signed; an absent one is
+    critical on every row, eqs 25-27). Required: mass_i, J00_i, J11_i, J22_i, yaw_i, v0_i, v1_i, r0_i,
+    r1_i, normal_yaw, restitution, and mu for pc-crash and Wach; the rest default to 0.
 
     Returns a dict of arrays, one row per input row:
         P_C (n, 3) [N s], the impulse on vehicle 1 in contact axes (n, t, z); NaN unless solved;
@@ -96,7 +100,7 @@ def solve_batch(jobs=0, velocities=False, **columns):
         problems: {row: why} for each invalid row (it is flagged, not dropped);
     and with velocities=True (the scalar path, row by row) also P_W (n, 3) [N s] in world axes, v_1,
     v_2 (n, 3) [m/s] the CG velocities after (world) and w_1, w_2 (n, 3) [rad/s] the angular velocities
-    after (body). Rows agree with solve's pc-crash result to a few units in the last place.
+    after (body). Rows agree with solve's result for the same strategy within twice its rounding bound.
 
     Columns must be real numbers (integers, floats or booleans; not strings, complex numbers, dates or
     masked arrays). The call reads the caller's arrays in place while other Python threads run: do not
@@ -104,7 +108,7 @@ def solve_batch(jobs=0, velocities=False, **columns):
     finite or beyond the case format's magnitudes (1e12, and non-zero below 1e-100), a mass is not
     positive, an inertia tensor is not symmetric positive definite, restitution is outside [0, 1] or mu
     is negative."""
-    return _impact3d._solve_batch(columns, jobs, velocities)
+    return _impact3d._solve_batch(columns, jobs, velocities, strategy, limit)
 
 
 def _uncertainty(uncertainty):

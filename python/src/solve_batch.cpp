@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -40,7 +41,38 @@ constexpr std::size_t kBlock = 4096;  // rows a thread takes at a time
 
 const char* const kVehicleColumns[] = {"mass", "J00", "J01", "J02", "J10", "J11", "J12", "J20", "J21", "J22", "yaw",
                                        "pitch", "roll", "v0",  "v1",  "v2",  "w0",  "w1",  "w2",  "r0",  "r1",  "r2"};
-const char* const kContactColumns[] = {"normal_yaw", "normal_pitch", "tangent_roll", "restitution", "mu"};
+const char* const kContactColumns[] = {"normal_yaw", "normal_pitch", "tangent_roll", "restitution"};
+
+// The strategies on lanes, and the columns of their ratios.
+enum class Kind { pc_crash, wach, brach };
+
+struct StrategyChoice {
+  Kind kind = Kind::pc_crash;
+  WachLimit limit = WachLimit::cir;
+  const char* name = "pc-crash";
+};
+
+StrategyChoice strategy_of(const std::string& name, const std::optional<std::string>& limit) {
+  StrategyChoice c;
+  if (name == "pc-crash") c.kind = Kind::pc_crash;
+  else if (name == "wach") c.kind = Kind::wach, c.name = "wach";
+  else if (name == "brach") c.kind = Kind::brach, c.name = "brach";
+  else
+    throw py::value_error(fmt::format("solve_batch: strategy {} is not one of \"pc-crash\", \"wach\", \"brach\"",
+                                      io::quoted(name)));
+  if (limit) {
+    if (c.kind != Kind::wach) throw py::value_error(fmt::format("solve_batch: limit is wach's, not {}'s", c.name));
+    if (*limit == "cir") c.limit = WachLimit::cir;
+    else if (*limit == "gir") c.limit = WachLimit::gir;
+    else throw py::value_error(fmt::format("solve_batch: limit {} is not \"cir\" or \"gir\"", io::quoted(*limit)));
+  }
+  return c;
+}
+
+std::vector<const char*> ratio_columns(Kind k) {
+  if (k == Kind::brach) return {"mu_t", "mu_z"};  // each optional: absent, critical on every row
+  return {"mu"};
+}
 
 bool required(const std::string& name) {
   for (const char* r : {"mass_", "J00_", "J11_", "J22_", "yaw_", "v0_", "v1_", "r0_", "r1_"})
@@ -52,16 +84,23 @@ bool required(const std::string& name) {
 // number repeated on every row, or 0.
 class Columns {
  public:
-  explicit Columns(const py::dict& given) {
+  Columns(const py::dict& given, const StrategyChoice& strategy) {
     std::vector<std::string> names;
     for (int i = 1; i <= 2; ++i)
       for (const char* c : kVehicleColumns) names.push_back(fmt::format("{}_{}", c, i));
     for (const char* c : kContactColumns) names.emplace_back(c);
+    for (const char* c : ratio_columns(strategy.kind)) names.emplace_back(c);
     for (const auto& [key, value] : given) {
       const std::string name = py::str(key);
-      if (std::find(names.begin(), names.end(), name) == names.end())
+      if (std::find(names.begin(), names.end(), name) == names.end()) {
+        for (Kind other : {Kind::pc_crash, Kind::brach})
+          for (const char* ratio : ratio_columns(other))
+            if (name == ratio)
+              throw py::type_error(fmt::format("solve_batch: {} is not a column of {} (its ratios: {})", name,
+                                               strategy.name, fmt::join(ratio_columns(strategy.kind), ", ")));
         throw py::type_error(fmt::format("solve_batch: no column {} (the columns are those of "
                                          "impact3d.BATCH_COLUMNS)", io::quoted(name)));
+      }
       // Numbers only: NumPy would also cast strings, complex numbers, dates, None, and a masked array's
       // hidden values.
       const py::array raw = py::array::ensure(value);
@@ -139,7 +178,7 @@ struct RowCheck {
       if (!(m1 > 0 && m2 > 0 && m3 > 0)) return fmt::format("J_{}: not positive definite", b + 1);
     }
     if (!(in.restitution[i] >= 0 && in.restitution[i] <= 1)) return "restitution: outside [0, 1]";
-    if (!(in.mu[i] >= 0)) return "mu: negative";
+    if (in.mu && !(in.mu[i] >= 0)) return "mu: negative";  // brach's ratios are signed
     return {};
   }
 };
@@ -155,9 +194,11 @@ py::array_t<double> rows_by_3(std::size_t rows) {
 
 }  // namespace
 
-py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
+py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities, const std::string& strategy_name,
+                     const std::optional<std::string>& limit) {
   if (jobs > kMaxJobs) throw py::value_error(fmt::format("solve_batch: jobs at most {}, not {}", kMaxJobs, jobs));
-  const Columns c(given);
+  const StrategyChoice strategy = strategy_of(strategy_name, limit);
+  const Columns c(given, strategy);
   const std::size_t n = c.rows();
   batch::CollisionColumns in;
   in.rows = n;
@@ -175,11 +216,25 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
     }
   }
   in.normal_yaw_deg = c["normal_yaw"], in.normal_pitch_deg = c["normal_pitch"], in.tangent_roll_deg = c["tangent_roll"];
-  in.restitution = c["restitution"], in.mu = c["mu"];
+  in.restitution = c["restitution"];
+  in.mu = strategy.kind == Kind::brach ? nullptr : c["mu"];
+  // Brach's ratio columns as given; an absent one is critical on every row.
+  const double* const mu_t = strategy.kind == Kind::brach && c.given("mu_t") ? c["mu_t"] : nullptr;
+  const double* const mu_z = strategy.kind == Kind::brach && c.given("mu_z") ? c["mu_z"] : nullptr;
+  const auto row_strategy = [&](std::size_t i) {
+    const auto ratio = [i](const double* column) { return column ? std::optional<double>(column[i]) : std::nullopt; };
+    switch (strategy.kind) {
+      case Kind::pc_crash: return Strategy<double>(PcCrash<double>{in.mu[i]});
+      case Kind::wach: return Strategy<double>(Wach<double>{in.mu[i], strategy.limit});
+      case Kind::brach: break;
+    }
+    return Strategy<double>(Brach<double>{ratio(mu_t), ratio(mu_z)});
+  };
   RowCheck check{in, {}, {}};
   for (int b = 1; b <= 2; ++b)
     for (const char* name : kVehicleColumns) check.named.emplace_back(fmt::format("{}_{}", name, b), nullptr);
   for (const char* name : kContactColumns) check.named.emplace_back(name, nullptr);
+  for (const char* name : ratio_columns(strategy.kind)) check.named.emplace_back(name, nullptr);
   for (auto& [name, column] : check.named) column = c[name];
   for (int b = 0; b < 2; ++b) {
     const char* lower[3] = {"J10", "J20", "J21"};
@@ -220,8 +275,7 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
           const std::size_t end = std::min(n, begin + kBlock);
           if (velocities) {
             for (std::size_t i = begin; i < end; ++i) {
-              const LeanSolution<double> r = solve_lean(scene_of(batch::row_of(in, i)),
-                                                        Strategy<double>(PcCrash<double>{in.mu[i]}), Want::velocities);
+              const LeanSolution<double> r = solve_lean(scene_of(batch::row_of(in, i)), row_strategy(i), Want::velocities);
               const bool solved = r.status == Status::solved;
               const Vec3<double>* vectors[5] = {&r.P_W, &r.v_W[0], &r.w_B[0], &r.v_W[1], &r.w_B[1]};
               for (int k = 0; k < 3; ++k) {
@@ -232,8 +286,12 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
               out.regime[i] = static_cast<std::uint8_t>(r.impulse.regime);
               out.warnings[i] = r.warnings;
             }
-          } else {
+          } else if (strategy.kind == Kind::pc_crash) {
             batch::pc_crash_columns(in, out, begin, end);
+          } else if (strategy.kind == Kind::wach) {
+            batch::wach_columns(in, strategy.limit, out, begin, end);
+          } else {
+            batch::brach_columns(in, mu_t, mu_z, out, begin, end);
           }
           for (std::size_t i = begin; i < end; ++i) {
             // A row that is not a collision is flagged, whatever the arithmetic made of it.
@@ -284,11 +342,13 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities) {
 }
 
 void add_solve_batch(py::module_& m) {
-  m.def("_solve_batch", &solve_batch, py::arg("columns"), py::arg("jobs") = 0u, py::arg("velocities") = false);
+  m.def("_solve_batch", &solve_batch, py::arg("columns"), py::arg("jobs") = 0u, py::arg("velocities") = false,
+        py::arg("strategy") = "pc-crash", py::arg("limit") = std::nullopt);
   py::list names;
   for (int i = 1; i <= 2; ++i)
     for (const char* c : kVehicleColumns) names.append(fmt::format("{}_{}", c, i));
   for (const char* c : kContactColumns) names.append(c);
+  for (const char* c : {"mu", "mu_t", "mu_z"}) names.append(c);
   m.attr("BATCH_COLUMNS") = py::tuple(names);
   m.attr("BATCH_SIMD") = batch::simd_name();
 }

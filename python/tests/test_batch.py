@@ -17,7 +17,7 @@ sys.path.insert(0, str(SOURCE / "bench" / "naive"))
 import pc_crash as peer  # noqa: E402
 
 
-def case_of(d, i):
+def case_of(d, i, strategy=None):
     def vehicle(k):
         J = [[float(d[f"J{p}{q}_{k}"][i]) for q in range(3)] for p in range(3)]
         return {"name": f"vehicle {k}", "mass": float(d[f"mass_{k}"][i]), "inertia": J,
@@ -28,19 +28,17 @@ def case_of(d, i):
     return {"name": f"row {i}", "units": "SI", "vehicles": [vehicle(1), vehicle(2)],
             "contact": {"normal_yaw_deg": float(d["normal_yaw"][i]), "normal_pitch_deg": float(d["normal_pitch"][i]),
                         "tangent_roll_deg": float(d["tangent_roll"][i])},
-            "restitution": float(d["restitution"][i]), "strategy": [{"name": "pc-crash", "mu": float(d["mu"][i])}]}
+            "restitution": float(d["restitution"][i]),
+            "strategy": [strategy(d, i) if strategy else {"name": "pc-crash", "mu": float(d["mu"][i])}]}
 
 
-@pytest.mark.parametrize("velocities", [False, True])
-def test_rows_equal_solve(velocities):
-    d = peer.random_collisions(300, 5)
-    d["mu"] = np.random.default_rng(6).uniform(0.05, 1.2, len(d["mu"]))  # both regimes
-    n = len(d["mu"])
-    r = impact3d.solve_batch(velocities=velocities, **d)
-    assert r["P_C"].shape == (n, 3) and not r["problems"]
+def compare_rows(d, r, velocities, strategy=None):
+    """Each row of solve_batch's result `r` against solve of the same row (with `strategy`, else
+    pc-crash): the status, the regime, the warning codes, the impulse within twice solve's rounding bound,
+    and with velocities the post-impact states. Returns the regimes seen and the rows compared."""
     regimes, checked = set(), 0
-    for i in range(n):
-        s = impact3d.solve(case_of(d, i))["results"][0]
+    for i in range(len(r["status"])):
+        s = impact3d.solve(case_of(d, i, strategy))["results"][0]
         assert impact3d.STATUSES[r["status"][i]] == "solved"
         assert impact3d.REGIMES[r["regime"][i]] == s["regime"]
         bound = 2 * s["rounding_bound"]
@@ -59,8 +57,72 @@ def test_rows_equal_solve(velocities):
                 assert np.max(np.abs(r["w" + name][i] - w)) <= bound * (np.max(np.abs(w)) + np.max(np.abs(r["w" + name][i] - [d[f"w{p}{name}"][i] for p in range(3)])))
         regimes.add(s["regime"])
         checked += 1
+    return regimes, checked
+
+
+@pytest.mark.parametrize("velocities", [False, True])
+def test_rows_equal_solve(velocities):
+    d = peer.random_collisions(300, 5)
+    d["mu"] = np.random.default_rng(6).uniform(0.05, 1.2, len(d["mu"]))  # both regimes
+    n = len(d["mu"])
+    r = impact3d.solve_batch(velocities=velocities, **d)
+    assert r["P_C"].shape == (n, 3) and not r["problems"]
+    regimes, checked = compare_rows(d, r, velocities)
     assert checked == n == 300
     assert regimes == {"full", "sliding"}
+
+
+# Wach and Brach (solve_batch's strategy), each form against solve with the same strategy in the case.
+def ratio(d, name, i):
+    return float(d[name][i]) if name in d else "critical"
+
+
+OTHER_STRATEGIES = [
+    ("wach", "cir", ("mu",), lambda d, i: {"name": "wach", "mu": float(d["mu"][i]), "limit": "cir"}),
+    ("wach", "gir", ("mu",), lambda d, i: {"name": "wach", "mu": float(d["mu"][i]), "limit": "gir"}),
+    ("brach", None, ("mu_t", "mu_z"), lambda d, i: {"name": "brach", "mu_t": ratio(d, "mu_t", i), "mu_z": ratio(d, "mu_z", i)}),
+    ("brach", None, ("mu_z",), lambda d, i: {"name": "brach", "mu_t": ratio(d, "mu_t", i), "mu_z": ratio(d, "mu_z", i)}),
+    ("brach", None, (), lambda d, i: {"name": "brach", "mu_t": "critical", "mu_z": "critical"}),
+]
+
+
+@pytest.mark.parametrize("form", range(len(OTHER_STRATEGIES)))
+@pytest.mark.parametrize("velocities", [False, True])
+def test_wach_and_brach_rows_equal_solve(form, velocities):
+    name, limit, ratios, strategy = OTHER_STRATEGIES[form]
+    d = peer.random_collisions(120, 20 + form)
+    rng = np.random.default_rng(form)
+    mu = d.pop("mu")
+    if "mu" in ratios:
+        d["mu"] = rng.uniform(0.05, 1.2, len(mu))  # below and above the cap
+    if "mu_t" in ratios:
+        d["mu_t"] = rng.uniform(-0.3, 0.9, len(mu))  # Brach's ratios are signed
+    if "mu_z" in ratios:
+        d["mu_z"] = rng.uniform(-0.3, 0.3, len(mu))
+    n = len(mu)
+    r = impact3d.solve_batch(velocities=velocities, strategy=name, limit=limit, **d)
+    assert r["P_C"].shape == (n, 3) and not r["problems"]
+    regimes, checked = compare_rows(d, r, velocities, strategy)
+    assert checked == n == 120
+    assert regimes == ({"capped", "sliding"} if name == "wach" else {"as-given"})
+
+
+def test_strategy_and_its_columns_are_checked():
+    d = peer.random_collisions(10, 3)
+    with pytest.raises(ValueError, match="strategy"):
+        impact3d.solve_batch(strategy="wach-cir", **d)
+    with pytest.raises(ValueError, match="limit is wach's"):
+        impact3d.solve_batch(limit="gir", **d)
+    with pytest.raises(ValueError, match="limit"):
+        impact3d.solve_batch(strategy="wach", limit="critical", **d)
+    with pytest.raises(TypeError, match="mu is not a column of brach"):
+        impact3d.solve_batch(strategy="brach", **d)
+    with pytest.raises(TypeError, match="mu_t is not a column of pc-crash"):
+        impact3d.solve_batch(mu_t=0.2, **d)
+    mu = d.pop("mu")
+    # Brach with a negative ratio is a row like any other; pc-crash's mu must not be negative.
+    assert not impact3d.solve_batch(strategy="brach", mu_t=-0.2, **d)["problems"]
+    assert impact3d.solve_batch(mu=-mu, **d)["problems"][0] == "mu: negative"
 
 
 def test_bad_rows_are_flagged_not_dropped():

@@ -153,9 +153,13 @@ V3<B> v_Ic(const Body<B>& b) {
 template <typename B>
 struct LaneProblem {
   B m_prime, e, kappa, bound;  // bound: rounding::relative_bound(amplification) times the quotient's factor
+  B K_max;                     // the largest diagonal entry of K, which bounds every entry (K is SPD)
   M3<B> K;
   V3<B> V;  // V_ri, contact axes
-  typename B::batch_bool_type doubt;  // not approaching, m' or K not finite, or the rounding not trusted
+  // Not approaching, m' not positive or K not finite, eps not in [0, 1] (the signs below rest on
+  // m'(1 + eps) V_rn > 0, and on its two products adding without cancellation, fused or not), or the
+  // rounding not trusted.
+  typename B::batch_bool_type doubt;
 };
 
 template <typename B>
@@ -184,7 +188,9 @@ LaneProblem<B> problem(const CollisionColumns& in, std::size_t i) {
   // The rounding bound of rounding.hpp with the bounded amplification.
   const B quotient = one + xsimd::hypot(p.V(1), p.V(2)) / p.V(0);
   p.bound = B(32.0 * eps) * amplification * quotient;
-  p.doubt = !(p.V(0) > zero) || !xsimd::isfinite(p.K(0, 0)) || !xsimd::isfinite(p.m_prime) || !(p.bound <= B(1e-6 / 2));
+  p.K_max = xsimd::max(p.K(0, 0), xsimd::max(p.K(1, 1), p.K(2, 2)));
+  p.doubt = !(p.V(0) > zero) || !xsimd::isfinite(p.K(0, 0)) || !(p.m_prime > zero) || !xsimd::isfinite(p.m_prime) ||
+            !(p.e >= zero && p.e <= one) || !(p.bound <= B(1e-6 / 2));
   return p;
 }
 
@@ -194,7 +200,9 @@ typename B::batch_bool_type all_finite(const V3<B>& v) {
 }
 
 // Thrice a bound: the scalar path's own test (once) and the difference between the lane's value and the
-// scalar path's, up to agreement_bound (twice).
+// scalar path's, up to agreement_bound (twice). A quotient's denominator is held to the bound relative
+// to the size its terms can reach: K's entries are at most K_max, and their rounding (like V_ri's) is
+// of the order of the bound times that, not of the entries themselves.
 template <typename B>
 typename B::batch_bool_type within_thrice(const B& x, const B& bound) {
   return xsimd::abs(x) <= B(3.0) * bound;
@@ -262,19 +270,23 @@ template <typename B>
   V3<B> P;
   for (int k = 0; k < 3; ++k) P(k) = xsimd::select(full, P_fi(k), P_sl(k));
 
-  // The decision on the GIR, within the rounding bound of rounding.hpp.
-  const Mask undecided_doubt = within_thrice(mu - gir, p.bound * (B(1.0) + xsimd::abs(gir)));
+  // The decision on the GIR, within the rounding bound of rounding.hpp; the GIR's own denominator P_n,FI,
+  // and the sliding impulse's (whose sign is the normal impulse's), clear of zero.
+  const Mask undecided_doubt = within_thrice(mu - gir, p.bound * (B(1.0) + xsimd::abs(gir))) ||
+                               within_thrice(P_fi(0), p.bound * scale);
+  const B pb1 = mu * (K(0, 1) * c + K(0, 2) * s);
+  const Mask sliding_doubt = !full && within_thrice(K(0, 0) + pb1, p.bound * p.K_max * (B(1.0) + B(2.0) * xsimd::abs(mu)));
   const Mask finite = all_finite(P) && xsimd::isfinite(gir) && xsimd::isfinite(cir) && all_finite(P_fi);
-  const Mask deferred = p.doubt || !finite || plane_doubt || undecided_doubt;
+  const Mask deferred = p.doubt || !finite || plane_doubt || undecided_doubt || sliding_doubt;
   store(out, i, P, xsimd::select(full, regime_value<B>(Regime::full), regime_value<B>(Regime::sliding)), deferred,
         !(P(0) > zero), never<B>());
 }
 
 // The conditions Wach's and Brach's rows share with solve_lean beyond the problem's: the maximum-energy-
 // loss impulse (eps = 0) is not singular, K and V_ri are finite, and the sign of the normal impulse, on
-// which its tensile warning rests, is clear: that of the numerator m'(1 + eps) V_rn, a product of the
-// inputs, times that of the denominator `den`, which must lie outside thrice the bound of zero relative
-// to `den_size`, the sum of its terms' magnitudes.
+// which its tensile warning rests, is clear: that of its numerator V_rn eps m' + V_rn m', positive (the
+// problem's doubt), times that of its denominator `den`, which must lie outside thrice the bound of zero
+// relative to `den_size`, the size its terms can reach.
 template <typename B>
 typename B::batch_bool_type shared_doubt(const LaneProblem<B>& p, const V3<B>& P, const B& den, const B& den_size) {
   const V3<B> P_0 = generated::full_impact(p.K, p.m_prime, B(0.0), p.V);
@@ -301,17 +313,24 @@ template <typename B>
   const B gir = generated::plane_generalized_ratio(p.K, p.V, c, s);
   const B cir = xsimd::select(p.e == zero, gir, generated::plane_critical_ratio(p.K, p.e, p.V, c, s));
   const B limit = at_cir ? cir : gir;
+  // The cap's denominator (eqs 19-20) clear of zero, where the ratio would jump between huge values of
+  // either sign: Vcp pb1 - V_rn (1 + eps) pb2, at eps = 0 for the GIR.
+  const B Vcp = p.V(1) * c + p.V(2) * s;
+  const B pb1_plane = p.K(0, 1) * c + p.K(0, 2) * s;
+  const B pb2 = (p.K(1, 1) * c + p.K(2, 1) * s) * c + (p.K(1, 2) * c + p.K(2, 2) * s) * s;
+  const B e_cap = at_cir ? p.e : zero;
+  const Mask cap_doubt = within_thrice(Vcp * pb1_plane - p.V(0) * (one + e_cap) * pb2,
+                                       p.bound * p.K_max * (B(2.0) * xsimd::abs(Vcp) + B(4.0) * p.V(0) * (one + e_cap)));
   const Mask undecided_doubt = within_thrice(mu - limit, p.bound * (one + xsimd::abs(limit)));
   const Mask capped = mu >= limit;
   const B used = xsimd::select(capped, limit, mu);
-  // A negative ratio carries a warning (strategies/limits.hpp); its sign is the scalar path's to decide
-  // where it lies within the bound of zero.
-  const Mask sign_doubt = within_thrice(used, p.bound * (one + xsimd::abs(used)));
+  // A negative ratio carries a warning (strategies/limits.hpp). An uncapped ratio is mu itself; a cap's
+  // sign is the scalar path's to decide where it lies within the bound of zero.
+  const Mask sign_doubt = capped && within_thrice(used, p.bound * (one + xsimd::abs(used)));
   const V3<B> P = generated::plane_impulse(p.K, p.m_prime, p.e, p.V, c, s, used);
-  const B pb1 = used * (p.K(0, 1) * c + p.K(0, 2) * s);
   const Mask finite = xsimd::isfinite(gir) && xsimd::isfinite(cir);
-  const Mask deferred = shared_doubt(p, P, p.K(0, 0) + pb1, xsimd::abs(p.K(0, 0)) + xsimd::abs(pb1)) || !finite ||
-                        plane_doubt || undecided_doubt || sign_doubt;
+  const Mask deferred = shared_doubt(p, P, p.K(0, 0) + used * pb1_plane, p.K_max * (one + B(2.0) * xsimd::abs(used))) ||
+                        !finite || plane_doubt || cap_doubt || undecided_doubt || sign_doubt;
   store(out, i, P, xsimd::select(capped, regime_value<B>(Regime::capped), regime_value<B>(Regime::sliding)), deferred,
         !(P(0) > zero), used < zero);
 }
@@ -325,16 +344,33 @@ template <typename B>
   using Mask = typename B::batch_bool_type;
   const B zero(0.0);
   const LaneProblem<B> p = problem<B>(in, i);
+  // A critical ratio's denominator clear of zero, where it would jump between huge values of either sign
+  // (and the normal impulse's sign with it): eq 25's V_rn (1 + eps) K_tt - V_t K_nt, eq 26's likewise in
+  // z, eq 27's the determinant below.
+  const B one(1.0), two(2.0), rise = p.V(0) * (one + p.e);
+  const auto t_doubt = [&] {
+    return within_thrice(rise * p.K(1, 1) - p.V(1) * p.K(0, 1), p.bound * p.K_max * (rise + xsimd::abs(p.V(1))));
+  };
+  const auto z_doubt = [&] {
+    return within_thrice(rise * p.K(2, 2) - p.V(2) * p.K(0, 2), p.bound * p.K_max * (rise + xsimd::abs(p.V(2))));
+  };
   B t, z;
+  Mask critical_doubt(false);
   if (mu_t && mu_z) {
     t = B::load_unaligned(mu_t + i), z = B::load_unaligned(mu_z + i);
   } else if (mu_z) {  // eq 25
     z = B::load_unaligned(mu_z + i), t = generated::brach_critical_t(p.K, p.e, p.V, z);
+    critical_doubt = t_doubt();
   } else if (mu_t) {  // eq 26
     t = B::load_unaligned(mu_t + i), z = generated::brach_critical_z(p.K, p.e, p.V, t);
+    critical_doubt = z_doubt();
   } else {  // eq 27
     const Eigen::Matrix<B, 2, 1> both = generated::brach_critical_both(p.K, p.e, p.V);
     t = both(0), z = both(1);
+    const M3<B>& K = p.K;
+    const B det = rise * (K(1, 1) * K(2, 2) - K(2, 1) * K(1, 2)) - p.V(1) * (K(0, 1) * K(2, 2) - K(2, 1) * K(0, 2)) +
+                  p.V(2) * (K(0, 1) * K(1, 2) - K(1, 1) * K(0, 2));
+    critical_doubt = within_thrice(det, p.bound * p.K_max * p.K_max * two * (rise + xsimd::abs(p.V(1)) + xsimd::abs(p.V(2))));
   }
   const V3<B> P = generated::brach_impulse(p.K, p.m_prime, p.e, p.V, t, z);
   const B ratio_t = P(1) / P(0), ratio_z = P(2) / P(0);
@@ -344,9 +380,9 @@ template <typename B>
   const Mask finite = xsimd::isfinite(t) && xsimd::isfinite(z) && xsimd::isfinite(ratio_t) && xsimd::isfinite(ratio_z) &&
                       xsimd::isfinite(t_c) && xsimd::isfinite(z_c) && all_finite(P_tc) && all_finite(P_zc) &&
                       xsimd::isfinite(P_tc(1) / P_tc(0)) && xsimd::isfinite(P_zc(2) / P_zc(0));
-  const B tt = p.K(0, 1) * t, zz = p.K(0, 2) * z;
-  const Mask deferred = shared_doubt(p, P, p.K(0, 0) + tt + zz, xsimd::abs(p.K(0, 0)) + xsimd::abs(tt) + xsimd::abs(zz)) ||
-                        !finite;
+  const Mask deferred = shared_doubt(p, P, p.K(0, 0) + p.K(0, 1) * t + p.K(0, 2) * z,
+                                     p.K_max * (one + xsimd::abs(t) + xsimd::abs(z))) ||
+                        !finite || critical_doubt;
   store(out, i, P, regime_value<B>(Regime::as_given), deferred, !(P(0) > zero), never<B>());
 }
 

@@ -29,6 +29,7 @@
 #include "impact3d/io/montecarlo_linear.hpp"
 #include "impact3d/io/result_numbers.hpp"
 #include "impact3d/numeric/analysis.hpp"
+#include "impact3d/numeric/thread_caches.hpp"
 #include "impact3d/uncertainty/portable_math.hpp"
 
 namespace impact3d::io {
@@ -446,9 +447,13 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   };
   {
     std::vector<std::jthread> threads;
-    for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(work, std::ref(*workers[j]));
+    const auto work_in_thread = [&](Worker& w) {
+      const ThreadCaches freed_at_exit;
+      work(w);
+    };
+    for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(work_in_thread, std::ref(*workers[j]));
     if (o.progress) {  // the calling thread reports
-      std::jthread own(work, std::ref(*workers[0]));
+      std::jthread own(work_in_thread, std::ref(*workers[0]));
       while (done < n && !failed) {
         o.progress(done);
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -505,7 +510,11 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   };
   {
     std::vector<std::jthread> threads;
-    for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(summarize);
+    for (unsigned j = 1; j < jobs; ++j)
+      threads.emplace_back([&] {
+        const ThreadCaches freed_at_exit;
+        summarize();
+      });
     summarize();
   }
   if (error) std::rethrow_exception(error);

@@ -5,13 +5,14 @@
 //
 // pc_crash_columns, wach_columns and brach_columns compute rows on SIMD lanes through the generated
 // kernels (the widest instruction set the CPU offers among AVX-512, AVX2 with FMA and SSE2), with the
-// regime as a lane mask. A row whose decision is not clear on the lane (the bodies do not approach, a
-// value is not finite, a solution plane, the regime, the sign of a ratio or of the normal impulse, or the
-// rounding warning within thrice the cheap rounding bound; any row that carries a warning other than
-// pc-crash's tensile normal impulse) is solved by solve_lean instead, so every row gets the scalar path's
-// status, regime and warnings; the impulses of the rows solved on lanes differ from solve_lean's only by
-// the rounding of the vectorized sine and cosine and of fused multiply-adds (tests/check_batch.cpp states
-// and checks the bound).
+// regime as a lane mask. A row whose decision is not clear on the lane is solved by solve_lean instead, so
+// every row gets the scalar path's status, regime and warnings: the bodies do not approach; a value is not
+// finite; eps is outside [0, 1] or m' not positive; a solution plane, the regime, the sign of Wach's cap
+// or of the normal impulse, a denominator of a ratio decided on, or the rounding warning falls within
+// thrice the cheap rounding bound; or the row carries a warning other than the two the lanes give
+// themselves, a tensile normal impulse and Wach's negative ratio. The impulses of the rows solved on
+// lanes differ from solve_lean's only by the rounding of the vectorized sine and cosine and of fused
+// multiply-adds (tests/check_batch.cpp states and checks the bound).
 #pragma once
 
 #include <cstddef>
