@@ -107,7 +107,11 @@ def solve_batch(jobs=0, velocities=False, strategy="pc-crash", limit=None, **col
     change them until it returns. A row is invalid, as the case reader would refuse it, when a value is not
     finite or beyond the case format's magnitudes (1e12, and non-zero below 1e-100), a mass is not
     positive, an inertia tensor is not symmetric positive definite, restitution is outside [0, 1] or mu
-    is negative."""
+    is negative. An unknown strategy or limit raises ValueError, one that is not a str TypeError."""
+    if not isinstance(strategy, str):
+        raise TypeError(f"solve_batch: strategy: a str, not {type(strategy).__name__}")
+    if limit is not None and not isinstance(limit, str):
+        raise TypeError(f"solve_batch: limit: a str or None, not {type(limit).__name__}")
     return _impact3d._solve_batch(columns, jobs, velocities, strategy, limit)
 
 

@@ -44,26 +44,26 @@ const char* const kVehicleColumns[] = {"mass", "J00", "J01", "J02", "J10", "J11"
 const char* const kContactColumns[] = {"normal_yaw", "normal_pitch", "tangent_roll", "restitution"};
 
 // The strategies on lanes, and the columns of their ratios.
-enum class Kind { pc_crash, wach, brach };
+using Kind = batch::ColumnStrategy::Kind;
 
 struct StrategyChoice {
-  Kind kind = Kind::pc_crash;
-  WachLimit limit = WachLimit::cir;
+  batch::ColumnStrategy lanes;  // Brach's ratio columns once the columns are read
   const char* name = "pc-crash";
 };
 
 StrategyChoice strategy_of(const std::string& name, const std::optional<std::string>& limit) {
   StrategyChoice c;
-  if (name == "pc-crash") c.kind = Kind::pc_crash;
-  else if (name == "wach") c.kind = Kind::wach, c.name = "wach";
-  else if (name == "brach") c.kind = Kind::brach, c.name = "brach";
+  Kind& kind = c.lanes.kind;
+  if (name == "pc-crash") kind = Kind::pc_crash;
+  else if (name == "wach") kind = Kind::wach, c.name = "wach";
+  else if (name == "brach") kind = Kind::brach, c.name = "brach";
   else
     throw py::value_error(fmt::format("solve_batch: strategy {} is not one of \"pc-crash\", \"wach\", \"brach\"",
                                       io::quoted(name)));
   if (limit) {
-    if (c.kind != Kind::wach) throw py::value_error(fmt::format("solve_batch: limit is wach's, not {}'s", c.name));
-    if (*limit == "cir") c.limit = WachLimit::cir;
-    else if (*limit == "gir") c.limit = WachLimit::gir;
+    if (kind != Kind::wach) throw py::value_error(fmt::format("solve_batch: limit is wach's, not {}'s", c.name));
+    if (*limit == "cir") c.lanes.limit = WachLimit::cir;
+    else if (*limit == "gir") c.lanes.limit = WachLimit::gir;
     else throw py::value_error(fmt::format("solve_batch: limit {} is not \"cir\" or \"gir\"", io::quoted(*limit)));
   }
   return c;
@@ -89,7 +89,7 @@ class Columns {
     for (int i = 1; i <= 2; ++i)
       for (const char* c : kVehicleColumns) names.push_back(fmt::format("{}_{}", c, i));
     for (const char* c : kContactColumns) names.emplace_back(c);
-    for (const char* c : ratio_columns(strategy.kind)) names.emplace_back(c);
+    for (const char* c : ratio_columns(strategy.lanes.kind)) names.emplace_back(c);
     for (const auto& [key, value] : given) {
       const std::string name = py::str(key);
       if (std::find(names.begin(), names.end(), name) == names.end()) {
@@ -97,7 +97,7 @@ class Columns {
           for (const char* ratio : ratio_columns(other))
             if (name == ratio)
               throw py::type_error(fmt::format("solve_batch: {} is not a column of {} (its ratios: {})", name,
-                                               strategy.name, fmt::join(ratio_columns(strategy.kind), ", ")));
+                                               strategy.name, fmt::join(ratio_columns(strategy.lanes.kind), ", ")));
         throw py::type_error(fmt::format("solve_batch: no column {} (the columns are those of "
                                          "impact3d.BATCH_COLUMNS)", io::quoted(name)));
       }
@@ -197,7 +197,7 @@ py::array_t<double> rows_by_3(std::size_t rows) {
 py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities, const std::string& strategy_name,
                      const std::optional<std::string>& limit) {
   if (jobs > kMaxJobs) throw py::value_error(fmt::format("solve_batch: jobs at most {}, not {}", kMaxJobs, jobs));
-  const StrategyChoice strategy = strategy_of(strategy_name, limit);
+  StrategyChoice strategy = strategy_of(strategy_name, limit);
   const Columns c(given, strategy);
   const std::size_t n = c.rows();
   batch::CollisionColumns in;
@@ -217,24 +217,16 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities, cons
   }
   in.normal_yaw_deg = c["normal_yaw"], in.normal_pitch_deg = c["normal_pitch"], in.tangent_roll_deg = c["tangent_roll"];
   in.restitution = c["restitution"];
-  in.mu = strategy.kind == Kind::brach ? nullptr : c["mu"];
+  const bool brach = strategy.lanes.kind == Kind::brach;
+  in.mu = brach ? nullptr : c["mu"];
   // Brach's ratio columns as given; an absent one is critical on every row.
-  const double* const mu_t = strategy.kind == Kind::brach && c.given("mu_t") ? c["mu_t"] : nullptr;
-  const double* const mu_z = strategy.kind == Kind::brach && c.given("mu_z") ? c["mu_z"] : nullptr;
-  const auto row_strategy = [&](std::size_t i) {
-    const auto ratio = [i](const double* column) { return column ? std::optional<double>(column[i]) : std::nullopt; };
-    switch (strategy.kind) {
-      case Kind::pc_crash: return Strategy<double>(PcCrash<double>{in.mu[i]});
-      case Kind::wach: return Strategy<double>(Wach<double>{in.mu[i], strategy.limit});
-      case Kind::brach: break;
-    }
-    return Strategy<double>(Brach<double>{ratio(mu_t), ratio(mu_z)});
-  };
+  if (brach && c.given("mu_t")) strategy.lanes.mu_t = c["mu_t"];
+  if (brach && c.given("mu_z")) strategy.lanes.mu_z = c["mu_z"];
   RowCheck check{in, {}, {}};
   for (int b = 1; b <= 2; ++b)
     for (const char* name : kVehicleColumns) check.named.emplace_back(fmt::format("{}_{}", name, b), nullptr);
   for (const char* name : kContactColumns) check.named.emplace_back(name, nullptr);
-  for (const char* name : ratio_columns(strategy.kind)) check.named.emplace_back(name, nullptr);
+  for (const char* name : ratio_columns(strategy.lanes.kind)) check.named.emplace_back(name, nullptr);
   for (auto& [name, column] : check.named) column = c[name];
   for (int b = 0; b < 2; ++b) {
     const char* lower[3] = {"J10", "J20", "J21"};
@@ -275,7 +267,8 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities, cons
           const std::size_t end = std::min(n, begin + kBlock);
           if (velocities) {
             for (std::size_t i = begin; i < end; ++i) {
-              const LeanSolution<double> r = solve_lean(scene_of(batch::row_of(in, i)), row_strategy(i), Want::velocities);
+              const LeanSolution<double> r = solve_lean(scene_of(batch::row_of(in, i)), strategy.lanes.row(in, i),
+                                                          Want::velocities);
               const bool solved = r.status == Status::solved;
               const Vec3<double>* vectors[5] = {&r.P_W, &r.v_W[0], &r.w_B[0], &r.v_W[1], &r.w_B[1]};
               for (int k = 0; k < 3; ++k) {
@@ -286,12 +279,8 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities, cons
               out.regime[i] = static_cast<std::uint8_t>(r.impulse.regime);
               out.warnings[i] = r.warnings;
             }
-          } else if (strategy.kind == Kind::pc_crash) {
-            batch::pc_crash_columns(in, out, begin, end);
-          } else if (strategy.kind == Kind::wach) {
-            batch::wach_columns(in, strategy.limit, out, begin, end);
           } else {
-            batch::brach_columns(in, mu_t, mu_z, out, begin, end);
+            batch::solve_columns(in, strategy.lanes, out, begin, end);
           }
           for (std::size_t i = begin; i < end; ++i) {
             // A row that is not a collision is flagged, whatever the arithmetic made of it.

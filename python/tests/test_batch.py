@@ -82,6 +82,7 @@ OTHER_STRATEGIES = [
     ("wach", "gir", ("mu",), lambda d, i: {"name": "wach", "mu": float(d["mu"][i]), "limit": "gir"}),
     ("brach", None, ("mu_t", "mu_z"), lambda d, i: {"name": "brach", "mu_t": ratio(d, "mu_t", i), "mu_z": ratio(d, "mu_z", i)}),
     ("brach", None, ("mu_z",), lambda d, i: {"name": "brach", "mu_t": ratio(d, "mu_t", i), "mu_z": ratio(d, "mu_z", i)}),
+    ("brach", None, ("mu_t",), lambda d, i: {"name": "brach", "mu_t": ratio(d, "mu_t", i), "mu_z": ratio(d, "mu_z", i)}),
     ("brach", None, (), lambda d, i: {"name": "brach", "mu_t": "critical", "mu_z": "critical"}),
 ]
 
@@ -115,6 +116,10 @@ def test_strategy_and_its_columns_are_checked():
         impact3d.solve_batch(limit="gir", **d)
     with pytest.raises(ValueError, match="limit"):
         impact3d.solve_batch(strategy="wach", limit="critical", **d)
+    with pytest.raises(TypeError, match="strategy: a str, not int"):
+        impact3d.solve_batch(strategy=3, **d)
+    with pytest.raises(TypeError, match="limit: a str or None, not bytes"):
+        impact3d.solve_batch(strategy="wach", limit=b"cir", **d)
     with pytest.raises(TypeError, match="mu is not a column of brach"):
         impact3d.solve_batch(strategy="brach", **d)
     with pytest.raises(TypeError, match="mu_t is not a column of pc-crash"):

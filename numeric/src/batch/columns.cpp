@@ -107,37 +107,52 @@ RawCollision<double> row_of(const CollisionColumns& in, std::size_t i) {
 namespace {
 
 // The rows the lanes did not decide (from lanes_end to end, and those marked kDeferred before it) on
-// the scalar path, with row i's strategy; how many.
-template <typename StrategyOf>
-std::size_t finish(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t lanes_end,
-                   std::size_t end, StrategyOf strategy_of) {
+// the scalar path, with each row's strategy; how many.
+std::size_t finish(const CollisionColumns& in, const ColumnStrategy& strategy, const ImpulseColumns& out,
+                   std::size_t begin, std::size_t lanes_end, std::size_t end) {
   std::size_t scalar = end - lanes_end;
   for (std::size_t i = begin; i < lanes_end; ++i)
-    if (out.status[i] == lanes::kDeferred) solve_row(in, out, i, strategy_of(i)), ++scalar;
-  for (std::size_t i = lanes_end; i < end; ++i) solve_row(in, out, i, strategy_of(i));
+    if (out.status[i] == lanes::kDeferred) solve_row(in, out, i, strategy.row(in, i)), ++scalar;
+  for (std::size_t i = lanes_end; i < end; ++i) solve_row(in, out, i, strategy.row(in, i));
   return scalar;
 }
 
 }  // namespace
 
+Strategy<double> ColumnStrategy::row(const CollisionColumns& in, std::size_t i) const {
+  const auto given = [i](const double* column) { return column ? std::optional<double>(column[i]) : std::nullopt; };
+  switch (kind) {
+    case Kind::pc_crash: return PcCrash<double>{in.mu[i]};
+    case Kind::wach: return Wach<double>{in.mu[i], limit};
+    case Kind::brach: break;
+  }
+  return Brach<double>{given(mu_t), given(mu_z)};
+}
+
+std::size_t solve_columns(const CollisionColumns& in, const ColumnStrategy& strategy, const ImpulseColumns& out,
+                          std::size_t begin, std::size_t end) {
+  const Kernel& k = kernel();
+  std::size_t lanes_end = begin;
+  switch (strategy.kind) {
+    case ColumnStrategy::Kind::pc_crash: lanes_end = k.pc_crash(in, out, begin, end); break;
+    case ColumnStrategy::Kind::wach: lanes_end = k.wach(in, strategy.limit == WachLimit::cir, out, begin, end); break;
+    case ColumnStrategy::Kind::brach: lanes_end = k.brach(in, strategy.mu_t, strategy.mu_z, out, begin, end); break;
+  }
+  return finish(in, strategy, out, begin, lanes_end, end);
+}
+
 std::size_t pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end) {
-  return finish(in, out, begin, kernel().pc_crash(in, out, begin, end), end,
-                [&](std::size_t i) { return Strategy<double>(PcCrash<double>{in.mu[i]}); });
+  return solve_columns(in, {}, out, begin, end);
 }
 
 std::size_t wach_columns(const CollisionColumns& in, WachLimit limit, const ImpulseColumns& out, std::size_t begin,
                          std::size_t end) {
-  return finish(in, out, begin, kernel().wach(in, limit == WachLimit::cir, out, begin, end), end,
-                [&](std::size_t i) { return Strategy<double>(Wach<double>{in.mu[i], limit}); });
+  return solve_columns(in, {ColumnStrategy::Kind::wach, limit}, out, begin, end);
 }
 
 std::size_t brach_columns(const CollisionColumns& in, const double* mu_t, const double* mu_z, const ImpulseColumns& out,
                           std::size_t begin, std::size_t end) {
-  const auto given = [](const double* column, std::size_t i) {
-    return column ? std::optional<double>(column[i]) : std::optional<double>();
-  };
-  return finish(in, out, begin, kernel().brach(in, mu_t, mu_z, out, begin, end), end,
-                [&](std::size_t i) { return Strategy<double>(Brach<double>{given(mu_t, i), given(mu_z, i)}); });
+  return solve_columns(in, {ColumnStrategy::Kind::brach, WachLimit::cir, mu_t, mu_z}, out, begin, end);
 }
 
 void sin_cos_deg_columns(const double* deg, double* s, double* c, std::size_t n) {

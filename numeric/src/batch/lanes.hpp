@@ -208,6 +208,48 @@ typename B::batch_bool_type within_thrice(const B& x, const B& bound) {
   return xsimd::abs(x) <= B(3.0) * bound;
 }
 
+// A quotient's denominator, and the size its terms can reach (for the plane ratios and the GIR, the
+// numerator's too): its rounding is of the order of the bound times the size.
+template <typename B>
+struct Den {
+  B den, size;
+};
+
+// Whether the denominator's sign, or its being zero, could differ between the lanes and solve_lean.
+template <typename B>
+typename B::batch_bool_type doubtful(const Den<B>& d, const B& bound) {
+  return within_thrice(d.den, bound * d.size);
+}
+
+// How much more a quotient's rounding can be than its terms': size / |den|, at least 1; relative to
+// 1 + |quotient| where `size` bounds the numerator too, and for eqs 25 and 26 (whose numerators grow with
+// the other ratio) relative to 1 + |t| + |z|, which normal_den's size carries.
+template <typename B>
+B amplified(const Den<B>& d) {
+  return xsimd::max(B(1.0), d.size / xsimd::abs(d.den));
+}
+
+// A plane ratio's denominator (eqs 19-20), Vcp pb1 - V_rn (1 + eps) pb2, at eps = 0 for the GIR; its size
+// bounds the numerator's, Vcp pa1 - V_rn (1 + eps) pa2, too (|c|, |s| <= 1, every entry of K at most
+// K_max).
+template <typename B>
+Den<B> plane_ratio_den(const LaneProblem<B>& p, const B& c, const B& s, const B& e) {
+  const B Vcp = p.V(1) * c + p.V(2) * s;
+  const B pb1 = p.K(0, 1) * c + p.K(0, 2) * s;
+  const B pb2 = (p.K(1, 1) * c + p.K(2, 1) * s) * c + (p.K(1, 2) * c + p.K(2, 2) * s) * s;
+  const B rise = p.V(0) * (B(1.0) + e);
+  return {Vcp * pb1 - rise * pb2, p.K_max * (B(2.0) * xsimd::abs(Vcp) + B(4.0) * rise)};
+}
+
+// The normal impulse's denominator for ratios t and z of it (eqs 18, 24), K_nn + K_nt t + K_nz z, and its
+// size when t and z carry a rounding `amp` times the bound relative to 1 + |ratio| (a critical ratio's;
+// zero for ratios given).
+template <typename B>
+Den<B> normal_den(const LaneProblem<B>& p, const B& t, const B& z, const B& amp) {
+  return {p.K(0, 0) + p.K(0, 1) * t + p.K(0, 2) * z,
+          p.K_max * (B(1.0) + xsimd::abs(t) + xsimd::abs(z)) * (B(1.0) + B(2.0) * amp)};
+}
+
 // A warning no lane of this strategy gives.
 template <typename B>
 typename B::batch_bool_type never() {
@@ -270,12 +312,16 @@ template <typename B>
   V3<B> P;
   for (int k = 0; k < 3; ++k) P(k) = xsimd::select(full, P_fi(k), P_sl(k));
 
-  // The decision on the GIR, within the rounding bound of rounding.hpp; the GIR's own denominator P_n,FI,
-  // and the sliding impulse's (whose sign is the normal impulse's), clear of zero.
-  const Mask undecided_doubt = within_thrice(mu - gir, p.bound * (B(1.0) + xsimd::abs(gir))) ||
-                               within_thrice(P_fi(0), p.bound * scale);
-  const B pb1 = mu * (K(0, 1) * c + K(0, 2) * s);
-  const Mask sliding_doubt = !full && within_thrice(K(0, 0) + pb1, p.bound * p.K_max * (B(1.0) + B(2.0) * xsimd::abs(mu)));
+  // The decision on the GIR, within the rounding bound of rounding.hpp widened by what the GIR's own
+  // denominator P_n,FI amplifies (|P_FI| / P_n,FI); that denominator, the CIR's (solve_lean reports the
+  // CIR and goes singular where it is not finite) and the sliding impulse's (whose sign is the normal
+  // impulse's) clear of zero. The plane's direction (c, s) carries the rounding of P_FI relative to
+  // P_cp: the bound of what rests on it is widened by |P_FI| / P_cp.
+  const Den<B> gir_den{P_fi(0), scale};
+  const B plane_bound = p.bound * xsimd::max(B(1.0), scale / P_cp);
+  const Mask undecided_doubt = within_thrice(mu - gir, p.bound * (B(1.0) + xsimd::abs(gir)) * amplified(gir_den)) ||
+                               doubtful(gir_den, p.bound) || doubtful(plane_ratio_den(p, c, s, p.e), plane_bound);
+  const Mask sliding_doubt = !full && doubtful(normal_den(p, mu * c, mu * s, zero), plane_bound);
   const Mask finite = all_finite(P) && xsimd::isfinite(gir) && xsimd::isfinite(cir) && all_finite(P_fi);
   const Mask deferred = p.doubt || !finite || plane_doubt || undecided_doubt || sliding_doubt;
   store(out, i, P, xsimd::select(full, regime_value<B>(Regime::full), regime_value<B>(Regime::sliding)), deferred,
@@ -285,15 +331,14 @@ template <typename B>
 // The conditions Wach's and Brach's rows share with solve_lean beyond the problem's: the maximum-energy-
 // loss impulse (eps = 0) is not singular, K and V_ri are finite, and the sign of the normal impulse, on
 // which its tensile warning rests, is clear: that of its numerator V_rn eps m' + V_rn m', positive (the
-// problem's doubt), times that of its denominator `den`, which must lie outside thrice the bound of zero
-// relative to `den_size`, the size its terms can reach.
+// problem's doubt), times that of its denominator, which must be clear of zero by `bound`.
 template <typename B>
-typename B::batch_bool_type shared_doubt(const LaneProblem<B>& p, const V3<B>& P, const B& den, const B& den_size) {
+typename B::batch_bool_type shared_doubt(const LaneProblem<B>& p, const V3<B>& P, const Den<B>& den, const B& bound) {
   const V3<B> P_0 = generated::full_impact(p.K, p.m_prime, B(0.0), p.V);
   typename B::batch_bool_type finite = all_finite(p.V) && all_finite(P_0) && all_finite(P);
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) finite = finite && xsimd::isfinite(p.K(r, c));
-  return p.doubt || !finite || within_thrice(den, p.bound * den_size);
+  return p.doubt || !finite || doubtful(den, bound);
 }
 
 
@@ -310,27 +355,30 @@ template <typename B>
   const B length = xsimd::hypot(p.V(1), p.V(2));
   const Mask plane_doubt = length <= three * B(16.0 * eps) * p.kappa * norm(p.V);
   const B c = p.V(1) / length, s = p.V(2) / length;
+  // What rests on the plane carries the rounding of V_ri relative to its sliding part: the bound is
+  // widened by |V_ri| / |V_cp|.
+  const B bound = p.bound * xsimd::max(one, norm(p.V) / length);
   const B gir = generated::plane_generalized_ratio(p.K, p.V, c, s);
   const B cir = xsimd::select(p.e == zero, gir, generated::plane_critical_ratio(p.K, p.e, p.V, c, s));
   const B limit = at_cir ? cir : gir;
-  // The cap's denominator (eqs 19-20) clear of zero, where the ratio would jump between huge values of
-  // either sign: Vcp pb1 - V_rn (1 + eps) pb2, at eps = 0 for the GIR.
-  const B Vcp = p.V(1) * c + p.V(2) * s;
-  const B pb1_plane = p.K(0, 1) * c + p.K(0, 2) * s;
-  const B pb2 = (p.K(1, 1) * c + p.K(2, 1) * s) * c + (p.K(1, 2) * c + p.K(2, 2) * s) * s;
-  const B e_cap = at_cir ? p.e : zero;
-  const Mask cap_doubt = within_thrice(Vcp * pb1_plane - p.V(0) * (one + e_cap) * pb2,
-                                       p.bound * p.K_max * (B(2.0) * xsimd::abs(Vcp) + B(4.0) * p.V(0) * (one + e_cap)));
-  const Mask undecided_doubt = within_thrice(mu - limit, p.bound * (one + xsimd::abs(limit)));
+  // Both caps' denominators (eqs 19-20) clear of zero, where a ratio would jump between huge values of
+  // either sign: solve_lean forms both and goes singular where either is not finite. The cap used
+  // carries the rounding its denominator amplifies into the decisions on it.
+  const Den<B> cir_den = plane_ratio_den(p, c, s, p.e), gir_den = plane_ratio_den(p, c, s, zero);
+  const B amp = amplified(at_cir ? cir_den : gir_den);
+  const Mask cap_doubt = doubtful(cir_den, bound) || doubtful(gir_den, bound);
+  const Mask undecided_doubt = within_thrice(mu - limit, bound * (one + xsimd::abs(limit)) * amp);
   const Mask capped = mu >= limit;
   const B used = xsimd::select(capped, limit, mu);
   // A negative ratio carries a warning (strategies/limits.hpp). An uncapped ratio is mu itself; a cap's
   // sign is the scalar path's to decide where it lies within the bound of zero.
-  const Mask sign_doubt = capped && within_thrice(used, p.bound * (one + xsimd::abs(used)));
+  const Mask sign_doubt = capped && within_thrice(used, bound * (one + xsimd::abs(used)) * amp);
   const V3<B> P = generated::plane_impulse(p.K, p.m_prime, p.e, p.V, c, s, used);
   const Mask finite = xsimd::isfinite(gir) && xsimd::isfinite(cir);
-  const Mask deferred = shared_doubt(p, P, p.K(0, 0) + used * pb1_plane, p.K_max * (one + B(2.0) * xsimd::abs(used))) ||
-                        !finite || plane_doubt || cap_doubt || undecided_doubt || sign_doubt;
+  // In the plane, K_nn + K_nt c mu + K_nz s mu.
+  const Den<B> den = normal_den(p, used * c, used * s, xsimd::select(capped, amp, zero));
+  const Mask deferred =
+      shared_doubt(p, P, den, bound) || !finite || plane_doubt || cap_doubt || undecided_doubt || sign_doubt;
   store(out, i, P, xsimd::select(capped, regime_value<B>(Regime::capped), regime_value<B>(Regime::sliding)), deferred,
         !(P(0) > zero), used < zero);
 }
@@ -346,43 +394,44 @@ template <typename B>
   const LaneProblem<B> p = problem<B>(in, i);
   // A critical ratio's denominator clear of zero, where it would jump between huge values of either sign
   // (and the normal impulse's sign with it): eq 25's V_rn (1 + eps) K_tt - V_t K_nt, eq 26's likewise in
-  // z, eq 27's the determinant below.
+  // z, whatever the other ratio; eq 27's the determinant below. Eqs 25 and 26 give the critical ratios
+  // solve_lean reports beside every impulse, and it goes singular where one is not finite.
   const B one(1.0), two(2.0), rise = p.V(0) * (one + p.e);
-  const auto t_doubt = [&] {
-    return within_thrice(rise * p.K(1, 1) - p.V(1) * p.K(0, 1), p.bound * p.K_max * (rise + xsimd::abs(p.V(1))));
-  };
-  const auto z_doubt = [&] {
-    return within_thrice(rise * p.K(2, 2) - p.V(2) * p.K(0, 2), p.bound * p.K_max * (rise + xsimd::abs(p.V(2))));
-  };
-  B t, z;
-  Mask critical_doubt(false);
+  const M3<B>& K = p.K;
+  const Den<B> t_den{rise * K(1, 1) - p.V(1) * K(0, 1), p.K_max * (rise + xsimd::abs(p.V(1)))};
+  const Den<B> z_den{rise * K(2, 2) - p.V(2) * K(0, 2), p.K_max * (rise + xsimd::abs(p.V(2)))};
+  const B amp_t = amplified(t_den), amp_z = amplified(z_den);
+  Mask critical_doubt = doubtful(t_den, p.bound) || doubtful(z_den, p.bound);
+  B t, z, amp = zero;  // amp: what the ratios used carry beyond their own rounding (none when given)
   if (mu_t && mu_z) {
     t = B::load_unaligned(mu_t + i), z = B::load_unaligned(mu_z + i);
   } else if (mu_z) {  // eq 25
-    z = B::load_unaligned(mu_z + i), t = generated::brach_critical_t(p.K, p.e, p.V, z);
-    critical_doubt = t_doubt();
+    z = B::load_unaligned(mu_z + i), t = generated::brach_critical_t(p.K, p.e, p.V, z), amp = amp_t;
   } else if (mu_t) {  // eq 26
-    t = B::load_unaligned(mu_t + i), z = generated::brach_critical_z(p.K, p.e, p.V, t);
-    critical_doubt = z_doubt();
+    t = B::load_unaligned(mu_t + i), z = generated::brach_critical_z(p.K, p.e, p.V, t), amp = amp_z;
   } else {  // eq 27
     const Eigen::Matrix<B, 2, 1> both = generated::brach_critical_both(p.K, p.e, p.V);
     t = both(0), z = both(1);
-    const M3<B>& K = p.K;
-    const B det = rise * (K(1, 1) * K(2, 2) - K(2, 1) * K(1, 2)) - p.V(1) * (K(0, 1) * K(2, 2) - K(2, 1) * K(0, 2)) +
-                  p.V(2) * (K(0, 1) * K(1, 2) - K(1, 1) * K(0, 2));
-    critical_doubt = within_thrice(det, p.bound * p.K_max * p.K_max * two * (rise + xsimd::abs(p.V(1)) + xsimd::abs(p.V(2))));
+    const Den<B> det{rise * (K(1, 1) * K(2, 2) - K(2, 1) * K(1, 2)) - p.V(1) * (K(0, 1) * K(2, 2) - K(2, 1) * K(0, 2)) +
+                         p.V(2) * (K(0, 1) * K(1, 2) - K(1, 1) * K(0, 2)),
+                     p.K_max * p.K_max * two * (rise + xsimd::abs(p.V(1)) + xsimd::abs(p.V(2)))};
+    critical_doubt = critical_doubt || doubtful(det, p.bound);
+    amp = amplified(det);
   }
   const V3<B> P = generated::brach_impulse(p.K, p.m_prime, p.e, p.V, t, z);
   const B ratio_t = P(1) / P(0), ratio_z = P(2) / P(0);
   const B t_c = generated::brach_critical_t(p.K, p.e, p.V, ratio_z), z_c = generated::brach_critical_z(p.K, p.e, p.V, ratio_t);
   const V3<B> P_tc = generated::brach_impulse(p.K, p.m_prime, p.e, p.V, t_c, ratio_z);
   const V3<B> P_zc = generated::brach_impulse(p.K, p.m_prime, p.e, p.V, ratio_t, z_c);
+  // The critical impulses' normal denominators clear of zero too: solve_lean goes singular where one of
+  // them is not finite.
+  const Mask critical_impulse_doubt = doubtful(normal_den(p, t_c, ratio_z, (one + amp) * amp_t), p.bound) ||
+                                      doubtful(normal_den(p, ratio_t, z_c, (one + amp) * amp_z), p.bound);
   const Mask finite = xsimd::isfinite(t) && xsimd::isfinite(z) && xsimd::isfinite(ratio_t) && xsimd::isfinite(ratio_z) &&
                       xsimd::isfinite(t_c) && xsimd::isfinite(z_c) && all_finite(P_tc) && all_finite(P_zc) &&
                       xsimd::isfinite(P_tc(1) / P_tc(0)) && xsimd::isfinite(P_zc(2) / P_zc(0));
-  const Mask deferred = shared_doubt(p, P, p.K(0, 0) + p.K(0, 1) * t + p.K(0, 2) * z,
-                                     p.K_max * (one + xsimd::abs(t) + xsimd::abs(z))) ||
-                        !finite || critical_doubt;
+  const Mask deferred =
+      shared_doubt(p, P, normal_den(p, t, z, amp), p.bound) || !finite || critical_doubt || critical_impulse_doubt;
   store(out, i, P, regime_value<B>(Regime::as_given), deferred, !(P(0) > zero), never<B>());
 }
 
