@@ -292,7 +292,7 @@ template <typename B>
 [[gnu::flatten]] void pc_crash(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i) {
   using Mask = typename B::batch_bool_type;
   constexpr double eps = std::numeric_limits<double>::epsilon();
-  const B zero(0.0), three(3.0);
+  const B zero(0.0);
   const LaneProblem<B> p = problem<B>(in, i);
   const M3<B>& K = p.K;
   const V3<B>& V_ri = p.V;
@@ -303,7 +303,7 @@ template <typename B>
   const B gir = P_cp / P_fi(0);
   // phi_FI's plane, and whether its direction could be lost in rounding (Problem::negligible, bounded).
   const B scale = norm(P_fi);
-  const Mask plane_doubt = P_cp <= three * B(16.0 * eps) * p.kappa * scale;
+  const Mask plane_doubt = within_thrice(P_cp, B(16.0 * eps) * p.kappa * scale);
   const B c = P_fi(1) / P_cp, s = P_fi(2) / P_cp;
   const B cir = xsimd::select(p.e == zero, generated::plane_generalized_ratio(K, V_ri, c, s),
                               generated::plane_critical_ratio(K, p.e, V_ri, c, s));
@@ -348,12 +348,12 @@ template <typename B>
 [[gnu::flatten]] void wach(const CollisionColumns& in, bool at_cir, const ImpulseColumns& out, std::size_t i) {
   using Mask = typename B::batch_bool_type;
   constexpr double eps = std::numeric_limits<double>::epsilon();
-  const B zero(0.0), one(1.0), three(3.0);
+  const B zero(0.0), one(1.0);
   const LaneProblem<B> p = problem<B>(in, i);
   const B mu = B::load_unaligned(in.mu + i);
   // The plane, and whether its direction could be lost in rounding (Problem::negligible, bounded).
   const B length = xsimd::hypot(p.V(1), p.V(2));
-  const Mask plane_doubt = length <= three * B(16.0 * eps) * p.kappa * norm(p.V);
+  const Mask plane_doubt = within_thrice(length, B(16.0 * eps) * p.kappa * norm(p.V));
   const B c = p.V(1) / length, s = p.V(2) / length;
   // What rests on the plane carries the rounding of V_ri relative to its sliding part: the bound is
   // widened by |V_ri| / |V_cp|.
