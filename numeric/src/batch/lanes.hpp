@@ -250,6 +250,24 @@ Den<B> normal_den(const LaneProblem<B>& p, const B& t, const B& z, const B& amp)
           p.K_max * (B(1.0) + xsimd::abs(t) + xsimd::abs(z)) * (B(1.0) + B(2.0) * amp)};
 }
 
+// A solution plane through n along (y, z), the in-plane part of a vector of norm `magnitude` (as
+// strategies' solution_plane): its axes, whether its direction could be lost in rounding
+// (Problem::negligible, bounded), and the bound of what rests on it, widened by magnitude / length: the
+// direction carries the vector's rounding relative to its in-plane part.
+template <typename B>
+struct LanePlane {
+  B length, c, s, bound;
+  typename B::batch_bool_type doubt;
+};
+
+template <typename B>
+LanePlane<B> plane_of(const LaneProblem<B>& p, const B& y, const B& z, const B& magnitude) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const B length = xsimd::hypot(y, z);
+  return {length, y / length, z / length, p.bound * xsimd::max(B(1.0), magnitude / length),
+          within_thrice(length, B(16.0 * eps) * p.kappa * magnitude)};
+}
+
 // A warning no lane of this strategy gives.
 template <typename B>
 typename B::batch_bool_type never() {
@@ -291,7 +309,6 @@ B regime_value(Regime r) {
 template <typename B>
 [[gnu::flatten]] void pc_crash(const CollisionColumns& in, const ImpulseColumns& out, std::size_t i) {
   using Mask = typename B::batch_bool_type;
-  constexpr double eps = std::numeric_limits<double>::epsilon();
   const B zero(0.0);
   const LaneProblem<B> p = problem<B>(in, i);
   const M3<B>& K = p.K;
@@ -299,12 +316,11 @@ template <typename B>
   const B mu = B::load_unaligned(in.mu + i);
 
   const V3<B> P_fi = generated::full_impact(K, p.m_prime, p.e, V_ri);
-  const B P_cp = xsimd::hypot(P_fi(1), P_fi(2));
-  const B gir = P_cp / P_fi(0);
-  // phi_FI's plane, and whether its direction could be lost in rounding (Problem::negligible, bounded).
+  // phi_FI's plane.
   const B scale = norm(P_fi);
-  const Mask plane_doubt = within_thrice(P_cp, B(16.0 * eps) * p.kappa * scale);
-  const B c = P_fi(1) / P_cp, s = P_fi(2) / P_cp;
+  const LanePlane<B> plane = plane_of(p, P_fi(1), P_fi(2), scale);
+  const B &P_cp = plane.length, &c = plane.c, &s = plane.s;
+  const B gir = P_cp / P_fi(0);
   const B cir = xsimd::select(p.e == zero, generated::plane_generalized_ratio(K, V_ri, c, s),
                               generated::plane_critical_ratio(K, p.e, V_ri, c, s));
   const V3<B> P_sl = generated::plane_impulse(K, p.m_prime, p.e, V_ri, c, s, mu);
@@ -315,15 +331,14 @@ template <typename B>
   // The decision on the GIR, within the rounding bound of rounding.hpp widened by what the GIR's own
   // denominator P_n,FI amplifies (|P_FI| / P_n,FI); that denominator, the CIR's (solve_lean reports the
   // CIR and goes singular where it is not finite) and the sliding impulse's (whose sign is the normal
-  // impulse's) clear of zero. The plane's direction (c, s) carries the rounding of P_FI relative to
-  // P_cp: the bound of what rests on it is widened by |P_FI| / P_cp.
+  // impulse's) clear of zero, the last two by the plane's bound.
   const Den<B> gir_den{P_fi(0), scale};
-  const B plane_bound = p.bound * xsimd::max(B(1.0), scale / P_cp);
+  const B& plane_bound = plane.bound;
   const Mask undecided_doubt = within_thrice(mu - gir, p.bound * (B(1.0) + xsimd::abs(gir)) * amplified(gir_den)) ||
                                doubtful(gir_den, p.bound) || doubtful(plane_ratio_den(p, c, s, p.e), plane_bound);
   const Mask sliding_doubt = !full && doubtful(normal_den(p, mu * c, mu * s, zero), plane_bound);
   const Mask finite = all_finite(P) && xsimd::isfinite(gir) && xsimd::isfinite(cir) && all_finite(P_fi);
-  const Mask deferred = p.doubt || !finite || plane_doubt || undecided_doubt || sliding_doubt;
+  const Mask deferred = p.doubt || !finite || plane.doubt || undecided_doubt || sliding_doubt;
   store(out, i, P, xsimd::select(full, regime_value<B>(Regime::full), regime_value<B>(Regime::sliding)), deferred,
         !(P(0) > zero), never<B>());
 }
@@ -347,17 +362,12 @@ typename B::batch_bool_type shared_doubt(const LaneProblem<B>& p, const V3<B>& P
 template <typename B>
 [[gnu::flatten]] void wach(const CollisionColumns& in, bool at_cir, const ImpulseColumns& out, std::size_t i) {
   using Mask = typename B::batch_bool_type;
-  constexpr double eps = std::numeric_limits<double>::epsilon();
   const B zero(0.0), one(1.0);
   const LaneProblem<B> p = problem<B>(in, i);
   const B mu = B::load_unaligned(in.mu + i);
-  // The plane, and whether its direction could be lost in rounding (Problem::negligible, bounded).
-  const B length = xsimd::hypot(p.V(1), p.V(2));
-  const Mask plane_doubt = within_thrice(length, B(16.0 * eps) * p.kappa * norm(p.V));
-  const B c = p.V(1) / length, s = p.V(2) / length;
-  // What rests on the plane carries the rounding of V_ri relative to its sliding part: the bound is
-  // widened by |V_ri| / |V_cp|.
-  const B bound = p.bound * xsimd::max(one, norm(p.V) / length);
+  // The plane of the initial sliding velocity; everything below rests on it, so takes its bound.
+  const LanePlane<B> plane = plane_of(p, p.V(1), p.V(2), norm(p.V));
+  const B &c = plane.c, &s = plane.s, &bound = plane.bound;
   const B gir = generated::plane_generalized_ratio(p.K, p.V, c, s);
   const B cir = xsimd::select(p.e == zero, gir, generated::plane_critical_ratio(p.K, p.e, p.V, c, s));
   const B limit = at_cir ? cir : gir;
@@ -378,7 +388,7 @@ template <typename B>
   // In the plane, K_nn + K_nt c mu + K_nz s mu.
   const Den<B> den = normal_den(p, used * c, used * s, xsimd::select(capped, amp, zero));
   const Mask deferred =
-      shared_doubt(p, P, den, bound) || !finite || plane_doubt || cap_doubt || undecided_doubt || sign_doubt;
+      shared_doubt(p, P, den, bound) || !finite || plane.doubt || cap_doubt || undecided_doubt || sign_doubt;
   store(out, i, P, xsimd::select(capped, regime_value<B>(Regime::capped), regime_value<B>(Regime::sliding)), deferred,
         !(P(0) > zero), used < zero);
 }
@@ -398,8 +408,10 @@ template <typename B>
   // solve_lean reports beside every impulse, and it goes singular where one is not finite.
   const B one(1.0), two(2.0), rise = p.V(0) * (one + p.e);
   const M3<B>& K = p.K;
-  const Den<B> t_den{rise * K(1, 1) - p.V(1) * K(0, 1), p.K_max * (rise + xsimd::abs(p.V(1)))};
-  const Den<B> z_den{rise * K(2, 2) - p.V(2) * K(0, 2), p.K_max * (rise + xsimd::abs(p.V(2)))};
+  const auto critical_den = [&](int k) {  // k = 1: eq 25 (t), 2: eq 26 (z)
+    return Den<B>{rise * K(k, k) - p.V(k) * K(0, k), p.K_max * (rise + xsimd::abs(p.V(k)))};
+  };
+  const Den<B> t_den = critical_den(1), z_den = critical_den(2);
   const B amp_t = amplified(t_den), amp_z = amplified(z_den);
   Mask critical_doubt = doubtful(t_den, p.bound) || doubtful(z_den, p.bound);
   B t, z, amp = zero;  // amp: what the ratios used carry beyond their own rounding (none when given)
