@@ -1,7 +1,9 @@
 // What the 100-digit lean route (pc_crash_lean_100_digits in bench_peers.cpp: raw parameters to the
-// pc-crash impulse, 64 seeded random collisions) asks of MPFR, and what those operations cost by
-// themselves: the time no other arrangement of the same computation can go below while its numbers are
-// MPFR's. BENCHMARKS.md reads the table this prints beside the route's own time.
+// pc-crash impulse, 64 seeded random collisions) asks of MPFR when every operation is an MPFR call (its
+// numbers Boost's, as analyze computes), and what those operations cost by themselves: the time no other
+// arrangement of the same computation can go below while each operation is a call into MPFR. The library's
+// route computes the same numbers in FixedFloat (lean_twin.hpp), whose own +, - and x skip those calls;
+// its time is printed beside. BENCHMARKS.md reads the table.
 //
 // The MPFR entry points the route reaches are defined here, counting each call before passing it on to
 // the library's own (dlsym, RTLD_NEXT): the route is linked into this program, so its calls bind to
@@ -314,7 +316,15 @@ int main() {
     raw.push_back(bench::raw_as<F>(bench::raw_of(cs[k])));
     mu.push_back(F(cs[k].mu));
   }
+  // The route with Boost's numbers throughout: the scene and the solve in the scalar's own arithmetic.
   const auto route = [&] {
+    int solved = 0;
+    for (std::size_t k = 0; k < raw.size(); ++k)
+      solved += solve_lean_with<GeneratedEngine>(compute_scene(raw[k]), Strategy<F>(PcCrash<F>{mu[k]}), Want::impulse).status ==
+                Status::solved;
+    return solved;
+  };
+  const auto twin_route = [&] {
     int solved = 0;
     for (std::size_t k = 0; k < raw.size(); ++k)
       solved += solve_lean(scene_of(raw[k]), Strategy<F>(PcCrash<F>{mu[k]}), Want::impulse, Engine::generated).status == Status::solved;
@@ -325,6 +335,11 @@ int main() {
   const int solved = route();
   counting = recording = false;
   const double route_ns = best_ns(route, raw.size());
+  if (twin_route() != solved) {
+    std::fprintf(stderr, "the two routes solved different numbers of collisions\n");
+    return 1;
+  }
+  const double twin_ns = best_ns(twin_route, raw.size());
 
   const double n = double(raw.size());
   std::printf("100-digit lean route, raw parameters to the pc-crash impulse: %zu collisions (%d solved), MPFR at %ld bits\n",
@@ -342,4 +357,5 @@ int main() {
   }
   std::printf("arithmetic and sines alone: %.1f us a case; copies %.1f us; the route itself %.1f us\n", floor_us,
               copies_us, route_ns / 1000);
+  std::printf("the library's route (solve_lean, the same numbers in FixedFloat): %.1f us a case\n", twin_ns / 1000);
 }

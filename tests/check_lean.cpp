@@ -16,6 +16,7 @@
 
 #include "impact3d/numeric/lean.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/numeric/rotation.hpp"
 #include "support.hpp"
 
 // Every allocation of this program is counted, so that the lean path's "no heap per case" is measured.
@@ -160,7 +161,7 @@ TEMPLATE_TEST_CASE("solve_lean gives analyze's impulse, ratios, velocities and w
 }
 
 TEMPLATE_TEST_CASE("solve_lean decides as analyze does on both sides of the undecided band, and on ill-conditioned K",
-                   "[lean]", double, long double) {
+                   "[lean]", double, long double, mp::float100) {
   // mu = GIR (1 + k eps) and Wach's mu = CIR (1 + k eps) for k from 1 to 2^40 either way, through the
   // band where a decision is undecided and out of it on every scene (counted), and so through the band
   // where the lean path's cheap bound on kappa(K) calls the decision close and it must compute kappa.
@@ -186,7 +187,8 @@ TEMPLATE_TEST_CASE("solve_lean decides as analyze does on both sides of the unde
     const int undecided_before = undecided, decided_before = decided;
     for (int sign : {-1, 1})
       for (int e2 = 0; e2 <= 40; e2 += 2) {
-        const TestType f = 1 + sign * std::ldexp(eps, e2);
+        using std::ldexp;
+        const TestType f = 1 + sign * ldexp(eps, e2);
         for (const Strategy<TestType>& st : {Strategy<TestType>(PcCrash<TestType>{gir * f}), Strategy<TestType>(Wach<TestType>{cir * f})})
           for (Engine e : kEngines) {
             compared += compare(t, st, e);
@@ -256,3 +258,53 @@ TEST_CASE("solve_lean allocates nothing, with or without warnings", "[lean]") {
   CHECK(warned >= 2);  // the threshold case at least, both ways
 }
 #endif
+
+TEST_CASE("The condition bound in double is above ||M||_F ||M^-1||_F at 100 digits, and empty where it cannot bound it",
+          "[lean]") {
+  // The lean path bounds kappa(K) and cond(J) at wide precisions in double (rounding.hpp); a bound below
+  // the exact product would let a decision be taken on it that the settled kappa contradicts. The
+  // reference: the same Frobenius product by the adjugate at 100 digits, within 1e-90 of exact here.
+  using F = mp::float100;
+  std::mt19937_64 g(20261127);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int bounded = 0, refused = 0;
+  for (int k = 0; k < 4000; ++k) {
+    // M = Q diag(l) Q^T, eigenvalues spread by up to 10^5 and scaled by 10^-200 to 10^200.
+    const Mat3<double> Q = rotation_zyx_deg(180 * u(g), 90 * u(g), 180 * u(g));
+    const double spread = std::pow(10.0, 2.5 + 2.5 * u(g)), scale = std::pow(10.0, 200 * u(g));
+    const Vec3<double> l(scale, scale * std::pow(spread, 0.5 + 0.5 * u(g)), scale * spread);
+    Mat3<double> M = Q * l.asDiagonal() * Q.transpose();
+    M = ((M + M.transpose()) / 2).eval();
+    const Mat3<F> Mf = M.cast<F>();
+    const F a = Mf(0, 0), b = Mf(0, 1), c = Mf(0, 2), d = Mf(1, 1), e = Mf(1, 2), f = Mf(2, 2);
+    const F A = d * f - e * e, B = c * e - b * f, C = b * e - c * d, D = a * f - c * c, E = b * c - a * e, G = a * d - b * b;
+    const F det = a * A + b * B + c * C;
+    const F exact = sqrt((a * a + d * d + f * f + 2 * (b * b + c * c + e * e)) *
+                         (A * A + D * D + G * G + 2 * (B * B + C * C + E * E)) / (det * det));
+    const std::optional<double> bound = rounding::spd_condition_bound_in_double(Mf);
+    if (!bound) {
+      ++refused;
+      CHECK(exact > F(0x1p12) * F(1 - 0x1p-20));  // only the ill-conditioned ones go to 100 digits
+      continue;
+    }
+    ++bounded;
+    CHECK(F(*bound) >= exact);
+    CHECK(F(*bound) <= exact * F(1 + 0x1p-9));
+    CHECK(rounding::spd_condition_bound(Mf) == F(*bound));
+  }
+  INFO(bounded << " bounded in double, " << refused << " refused");
+  CHECK(bounded + refused == 4000);
+  CHECK(bounded > 1000);
+  CHECK(refused > 1000);
+  // Indefinite, out of double's range, not finite: the scalar's own arithmetic.
+  Mat3<F> indefinite = Mat3<F>::Identity();
+  indefinite(2, 2) = F(-1);
+  CHECK(!rounding::spd_condition_bound_in_double(indefinite));
+  CHECK(rounding::spd_condition_bound(indefinite) == std::numeric_limits<F>::infinity());
+  Mat3<F> tiny = Mat3<F>::Identity() * F("1e-400");
+  CHECK(!rounding::spd_condition_bound_in_double(tiny));
+  CHECK(abs(rounding::spd_condition_bound(tiny) - F(3)) < F("1e-90"));
+  Mat3<F> nan = Mat3<F>::Identity();
+  nan(1, 1) = std::numeric_limits<F>::quiet_NaN();
+  CHECK(!rounding::spd_condition_bound_in_double(nan));
+}

@@ -8,10 +8,12 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <variant>
 
 #include "impact3d/numeric/direct/engine.hpp"
 #include "impact3d/numeric/generated_engine.hpp"
+#include "impact3d/numeric/lean_twin.hpp"
 #include "impact3d/numeric/post_impact.hpp"
 #include "impact3d/numeric/precision_warnings.hpp"
 #include "impact3d/numeric/scalars.hpp"
@@ -107,12 +109,53 @@ LeanSolution<Scalar> solve_lean_with(const Scene<Scalar>& s, const Strategy<Scal
   return out;
 }
 
-// The scene must outlive the call only; nothing is kept.
+// A strategy's numbers, or a lean solution's, by f (a scalar to its twin and back, lean_twin.hpp).
+template <typename To, typename From, typename F>
+Strategy<To> convert_strategy(const Strategy<From>& st, F&& f) {
+  auto opt = [&](const std::optional<From>& x) { return x ? std::optional<To>(f(*x)) : std::nullopt; };
+  if (auto* pc = std::get_if<PcCrash<From>>(&st)) return PcCrash<To>{f(pc->mu)};
+  if (auto* w = std::get_if<Wach<From>>(&st)) return Wach<To>{f(w->mu), w->limit};
+  const Brach<From>& b = std::get<Brach<From>>(st);
+  return Brach<To>{opt(b.mu_t), opt(b.mu_z)};
+}
+
+template <typename To, typename From, typename F>
+LeanSolution<To> convert_solution(const LeanSolution<From>& in, F&& f) {
+  auto opt = [&](const std::optional<From>& x) { return x ? std::optional<To>(f(*x)) : std::nullopt; };
+  LeanSolution<To> out;
+  out.status = in.status, out.singular = in.singular, out.warnings = in.warnings;
+  const ImpulseSolution<From>& a = in.impulse;
+  ImpulseSolution<To>& b = out.impulse;
+  b.P_C = convert_each<To>(a.P_C, f);
+  b.regime = a.regime;
+  b.mu = opt(a.mu), b.mu_t = opt(a.mu_t), b.mu_z = opt(a.mu_z);
+  b.gir = opt(a.gir), b.cir = opt(a.cir), b.mu_t_critical = opt(a.mu_t_critical), b.mu_z_critical = opt(a.mu_z_critical);
+  if (a.plane) b.plane = PlaneAxes<To>{f(a.plane->c), f(a.plane->s)};
+  b.plane_angle_deg = opt(a.plane_angle_deg);
+  b.codes = a.codes, b.for_report = a.for_report;
+  out.P_W = convert_each<To>(in.P_W, f);
+  for (int i = 0; i < 2; ++i) out.v_W[i] = convert_each<To>(in.v_W[i], f), out.w_B[i] = convert_each<To>(in.w_B[i], f);
+  return out;
+}
+
+// The scene must outlive the call only; nothing is kept. A scalar with a lean twin (lean_twin.hpp) is
+// solved in the twin, whose every operation gives the scalar's value: the same solution, faster.
 template <typename Scalar>
 LeanSolution<Scalar> solve_lean(const Scene<Scalar>& s, const Strategy<Scalar>& st, Want want = Want::impulse,
                                 Engine engine = Engine::generated) {
-  if (engine == Engine::direct) return solve_lean_with<direct::DirectEngine>(s, st, want);
-  return solve_lean_with<GeneratedEngine>(s, st, want);
+  if constexpr (has_lean_twin_v<Scalar>) {
+    using Twin = LeanTwin<Scalar>;
+    using T = typename Twin::type;
+    const auto to = [](const Scalar& x) { return Twin::to(x); };
+    const Scene<T> twin_scene = convert_scene<T>(s, to);
+    const Strategy<T> twin_strategy = convert_strategy<T>(st, to);
+    const LeanSolution<T> r = engine == Engine::direct ? solve_lean_with<direct::DirectEngine>(twin_scene, twin_strategy, want)
+                                                       : solve_lean_with<GeneratedEngine>(twin_scene, twin_strategy, want);
+    return convert_solution<Scalar>(r, [](const T& x) { return Twin::from(x); });
+  } else {
+    if (engine == Engine::direct) return solve_lean_with<direct::DirectEngine>(s, st, want);
+    return solve_lean_with<GeneratedEngine>(s, st, want);
+  }
 }
 
 }  // namespace impact3d

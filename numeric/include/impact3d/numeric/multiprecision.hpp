@@ -11,6 +11,8 @@
 #include <boost/multiprecision/float128.hpp>
 #include <boost/multiprecision/mpfr.hpp>
 
+#include "impact3d/numeric/fixed_float.hpp"
+#include "impact3d/numeric/lean_twin.hpp"
 #include "impact3d/numeric/sin_cos_radians.hpp"
 
 namespace impact3d::mp {
@@ -99,6 +101,36 @@ struct SinCosRadians<mp::float100> {
   }
 };
 
+namespace mp {
+// MPFR's 100 digits, computed faster by FixedFloat: the same precision, the same value of every
+// operation the lean route takes (check_fixed_float). Boost rounds 100 digits up to 334 bits.
+using float100_twin = FixedFloat<334>;
+static_assert(std::numeric_limits<float100>::digits == 334);
+}  // namespace mp
+
+template <int P>
+struct SinCosRadians<mp::FixedFloat<P>> {
+  static void of(const mp::FixedFloat<P>& rad, mp::FixedFloat<P>& s, mp::FixedFloat<P>& c) {
+    using F = mp::FixedFloat<P>;
+    F sine, cosine;  // fresh: rad may be s or c
+    typename F::View vr(rad), vs(sine), vc(cosine);
+    mp::sin_cos(vs.x, vc.x, vr.x);
+    sine.take(vs), cosine.take(vc);
+    s = sine, c = cosine;
+  }
+};
+
+template <>
+struct LeanTwin<mp::float100> {
+  using type = mp::float100_twin;
+  static type to(const mp::float100& x) { return type::of(x.backend().data()); }
+  static mp::float100 from(const type& x) {
+    mp::float100 out;
+    x.to(out.backend().data());
+    return out;
+  }
+};
+
 }  // namespace impact3d
 
 namespace Eigen {
@@ -108,4 +140,6 @@ template <>
 struct NumTraits<impact3d::mp::float50> : impact3d::mp::NumTraitsFor<impact3d::mp::float50> {};
 template <>
 struct NumTraits<impact3d::mp::float100> : impact3d::mp::NumTraitsFor<impact3d::mp::float100> {};
+template <int P>
+struct NumTraits<impact3d::mp::FixedFloat<P>> : impact3d::mp::NumTraitsFor<impact3d::mp::FixedFloat<P>> {};
 }  // namespace Eigen

@@ -9,7 +9,9 @@
 #include <type_traits>
 
 #include "impact3d/numeric/batch/sin_cos.hpp"
+#include "impact3d/numeric/lean_twin.hpp"
 #include "impact3d/numeric/rotation.hpp"
+#include "impact3d/numeric/scalars.hpp"
 #include "impact3d/numeric/scene.hpp"
 
 namespace impact3d {
@@ -29,11 +31,9 @@ struct RawCollision {
   Scalar restitution;
 };
 
-// The scene of the raw parameters, rotations in closed form (rotation_zyx). In double the nine sines and
-// cosines are taken together on SIMD lanes (batch/sin_cos.hpp, within 4 ulps of sin_cos_deg): one case's
-// angles to rotations, the largest cost of a lean solve from raw parameters, in a few vector operations.
+// The scene of the raw parameters in the scalar's own arithmetic (scene_of below takes its lean twin).
 template <typename Scalar>
-Scene<Scalar> scene_of(const RawCollision<Scalar>& c) {
+Scene<Scalar> compute_scene(const RawCollision<Scalar>& c) {
   const Scalar deg[9] = {c.vehicle[0].yaw_deg, c.vehicle[0].pitch_deg, c.vehicle[0].roll_deg,
                          c.vehicle[1].yaw_deg, c.vehicle[1].pitch_deg, c.vehicle[1].roll_deg,
                          c.normal_yaw_deg,     c.normal_pitch_deg,     c.tangent_roll_deg};
@@ -64,6 +64,30 @@ Scene<Scalar> scene_of(const RawCollision<Scalar>& c) {
   s.R_WC = rotation_zyx(sc[6], sc[7], sc[8]);
   s.restitution = c.restitution;
   return s;
+}
+
+// The scene of the raw parameters, rotations in closed form (rotation_zyx). In double the nine sines and
+// cosines are taken together on SIMD lanes (batch/sin_cos.hpp, within 4 ulps of sin_cos_deg): one case's
+// angles to rotations, the largest cost of a lean solve from raw parameters, in a few vector operations.
+// A scalar with a lean twin (lean_twin.hpp) is computed in the twin: the same scene, faster.
+template <typename Scalar>
+Scene<Scalar> scene_of(const RawCollision<Scalar>& c) {
+  if constexpr (has_lean_twin_v<Scalar>) {
+    using Twin = LeanTwin<Scalar>;
+    using T = typename Twin::type;
+    const auto to = [](const Scalar& x) { return Twin::to(x); };
+    RawCollision<T> twin;
+    for (int i = 0; i < 2; ++i) {
+      const RawVehicle<Scalar>& v = c.vehicle[i];
+      twin.vehicle[i] = {to(v.mass), convert_each<T>(v.J_B, to), to(v.yaw_deg), to(v.pitch_deg), to(v.roll_deg),
+                         convert_each<T>(v.v_W, to), convert_each<T>(v.w_B, to), convert_each<T>(v.p_CgIc_B, to)};
+    }
+    twin.normal_yaw_deg = to(c.normal_yaw_deg), twin.normal_pitch_deg = to(c.normal_pitch_deg);
+    twin.tangent_roll_deg = to(c.tangent_roll_deg), twin.restitution = to(c.restitution);
+    return convert_scene<Scalar>(compute_scene(twin), [](const T& x) { return Twin::from(x); });
+  } else {
+    return compute_scene(c);
+  }
 }
 
 }  // namespace impact3d

@@ -100,9 +100,43 @@ Scalar spd_condition(const Mat3<Scalar>& M) {
   }
 }
 
+// ||M||_F ||M^-1||_F for a multiprecision M, computed in double, where that bounds it: M's entries
+// rounded to double (each within 2^-53 of itself, a perturbation of M within 2^-53 ||M||), scaled by a
+// power of two to at most 1. Where the double adjugate finds M positive definite with the product at
+// most 2^12, its errors (the determinant's within about 10 u kappa^2, the adjugate's within 12 u kappa,
+// u = 2^-53) stay below 2^-25 of it, and M itself is positive definite by a margin far beyond them; the
+// product times 1 + 2^-10 is then above the exact one. Elsewhere (an entry outside [2^-900, 2^900], M
+// indefinite or worse conditioned) empty: the scalar's own arithmetic decides. The lean path uses the
+// bound only to decide what is far from a limit, so a larger valid bound changes no result.
+template <typename Scalar>
+std::optional<double> spd_condition_bound_in_double(const Mat3<Scalar>& M) {
+  double m[6] = {to_double(M(0, 0)), to_double(M(0, 1)), to_double(M(0, 2)),
+                 to_double(M(1, 1)), to_double(M(1, 2)), to_double(M(2, 2))};
+  double big = 0;
+  for (const double x : m) {
+    if (!std::isfinite(x)) return std::nullopt;
+    big = std::fabs(x) > big ? std::fabs(x) : big;
+  }
+  if (!(big >= 0x1p-900 && big <= 0x1p900)) return std::nullopt;
+  int e2;
+  std::frexp(big, &e2);
+  for (double& x : m) x = std::ldexp(x, -e2);
+  const double a = m[0], b = m[1], c = m[2], d = m[3], e = m[4], f = m[5];
+  const double A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;
+  const double D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
+  const double det = a * A + b * B + c * C;
+  if (!(a > 0) || !(F > 0) || !(det > 0)) return std::nullopt;
+  const double norm2 = a * a + d * d + f * f + 2 * (b * b + c * c + e * e);
+  const double inverse2 = (A * A + D * D + F * F + 2 * (B * B + C * C + E * E)) / (det * det);
+  const double k = std::sqrt(norm2 * inverse2);
+  if (!(k <= 0x1p12)) return std::nullopt;
+  return k * (1 + 0x1p-10);
+}
+
 // An upper bound of spd_condition without eigenvalues, for the lean path: ||M||_F ||M^-1||_F, at least
 // lambda_max / lambda_min and at most three times it, M^-1 by its adjugate; infinity where M fails
-// Sylvester's test (a leading minor not positive), as spd_condition is where M is indefinite.
+// Sylvester's test (a leading minor not positive), as spd_condition is where M is indefinite. Beyond
+// long double, in double where that bounds it (above).
 template <typename Scalar>
 Scalar spd_condition_bound(const Mat3<Scalar>& M) {
   if constexpr (is_exact_v<Scalar>) {
@@ -110,6 +144,8 @@ Scalar spd_condition_bound(const Mat3<Scalar>& M) {
   } else if constexpr (is_enclosure_v<Scalar>) {
     return EnclosureTraits<Scalar>::spd_condition(M);
   } else {
+    if constexpr (std::numeric_limits<Scalar>::digits > 64)
+      if (const std::optional<double> k = spd_condition_bound_in_double(M)) return Scalar(*k);
     using std::sqrt;
     const Scalar a = M(0, 0), b = M(0, 1), c = M(0, 2), d = M(1, 1), e = M(1, 2), f = M(2, 2);
     const Scalar A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;  // first column of the adjugate

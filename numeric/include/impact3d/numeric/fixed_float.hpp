@@ -1,0 +1,429 @@
+// A binary floating-point number of P bits held in fixed limbs, whose +, - and x are rounded here,
+// correctly to nearest (ties to even), and whose other operations are MPFR's own calls on it: the same
+// value, bit for bit, as an MPFR number of precision P. It exists for speed alone. At 100 digits an MPFR
+// call costs about as much in bookkeeping as in arithmetic (each operand's precision, thread-local flags
+// and exponent range, a generic rounding), and Boost's number adds a zeroing constructor to every
+// temporary (BENCHMARKS.md); here a product is GMP's exact 2P-bit product (mpn_mul_n) rounded once, a
+// sum the exact sum rounded once: the definition MPFR implements. check_fixed_float holds every
+// operation to MPFR's, and check_lean the lean route computed in it to analyze's in Boost's numbers.
+//
+// Layout as MPFR's: a regular value is 0.m x 2^e with the top bit of m set, the bits below P zero.
+// Exponents stay within the fast range below, far inside MPFR's default [1 - 2^30, 2^30 - 1], which
+// impact3d keeps; a result that would leave it, and every operation on an infinity or a NaN, is MPFR's
+// call (which then overflows or underflows exactly as MPFR does).
+#pragma once
+
+#include <mpfr.h>
+
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+
+namespace impact3d::mp {
+
+template <int P>
+class FixedFloat {
+ public:
+  using Limb = std::uint64_t;
+  static constexpr int kLimbs = (P + 63) / 64;
+  static constexpr int kSpare = 64 * kLimbs - P;  // the unused low bits of m[0]
+  static_assert(P > 64 && kSpare >= 2, "room below the last place for the round bit");
+  static constexpr std::int64_t kFastExponent = std::int64_t{1} << 28;
+  enum Kind : std::uint8_t { kZero, kRegular, kInf, kNaN };
+
+  FixedFloat() = default;  // +0, as an MPFR number Boost constructs
+  FixedFloat(int v) { set_integer(v < 0, v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v)); }
+  FixedFloat(long v) { set_integer(v < 0, v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v)); }
+  FixedFloat(long long v) { set_integer(v < 0, v < 0 ? 0 - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v)); }
+  FixedFloat(unsigned v) { set_integer(false, v); }
+  FixedFloat(unsigned long v) { set_integer(false, v); }
+  FixedFloat(unsigned long long v) { set_integer(false, v); }
+  // Exact: a double has 53 bits.
+  FixedFloat(double v) {
+    if (std::isnan(v)) kind_ = kNaN;
+    else if (std::isinf(v)) kind_ = kInf, neg_ = v < 0;
+    else if (v == 0) neg_ = std::signbit(v);
+    else {
+      int e2;
+      const double f = std::frexp(v, &e2);  // |f| in [1/2, 1)
+      neg_ = f < 0;
+      m_[kLimbs - 1] = static_cast<Limb>(std::ldexp(neg_ ? -f : f, 64));
+      kind_ = kRegular, e_ = e2;
+    }
+  }
+
+  // MPFR's view of this number: MPFR reads it, or writes a result of precision P into it.
+  struct View {
+    mpfr_t x;
+    explicit View(const FixedFloat& f) {
+      const int kind = f.kind_ == kZero ? MPFR_ZERO_KIND : f.kind_ == kRegular ? MPFR_REGULAR_KIND : f.kind_ == kInf ? MPFR_INF_KIND : MPFR_NAN_KIND;
+      mpfr_custom_init_set(x, f.neg_ ? -kind : kind, static_cast<mpfr_exp_t>(f.e_), P, const_cast<Limb*>(f.m_.data()));
+    }
+  };
+  // What MPFR wrote into a view of this number.
+  void take(const View& v) {
+    neg_ = mpfr_signbit(v.x) != 0;
+    if (mpfr_nan_p(v.x)) kind_ = kNaN;
+    else if (mpfr_inf_p(v.x)) kind_ = kInf;
+    else if (mpfr_zero_p(v.x)) kind_ = kZero;
+    else kind_ = kRegular, e_ = mpfr_get_exp(v.x);
+  }
+  // An MPFR number of precision P, exactly: its limbs copied where it is regular and of precision P (MPFR
+  // keeps exactly kLimbs limbs then, the bits below P zero), else MPFR's mpfr_set.
+  static FixedFloat of(mpfr_srcptr x) {
+    FixedFloat r;
+    if (mpfr_regular_p(x) && mpfr_get_prec(x) == P) {
+      const Limb* d = static_cast<const Limb*>(mpfr_custom_get_significand(x));
+      for (int i = 0; i < kLimbs; ++i) r.m_[i] = d[i];
+      r.kind_ = kRegular, r.e_ = mpfr_custom_get_exp(x), r.neg_ = mpfr_signbit(x) != 0;
+      return r;
+    }
+    View v(r);
+    mpfr_set(v.x, x, MPFR_RNDN);
+    r.take(v);
+    return r;
+  }
+  // Into an MPFR number, rounded to its precision (exactly when it is P).
+  void to(mpfr_ptr out) const {
+    if (kind_ == kRegular && mpfr_get_prec(out) == P) {
+      Limb* d = static_cast<Limb*>(mpfr_custom_get_significand(out));
+      for (int i = 0; i < kLimbs; ++i) d[i] = m_[i];
+      mpfr_custom_init_set(out, neg_ ? -MPFR_REGULAR_KIND : MPFR_REGULAR_KIND, static_cast<mpfr_exp_t>(e_), P, d);
+      return;
+    }
+    const View v(*this);
+    mpfr_set(out, v.x, MPFR_RNDN);
+  }
+
+  // f(result, a, b, rounding) or f(result, a, rounding): one MPFR call.
+  template <typename F>
+  static void call_into(FixedFloat& r, F f, const FixedFloat& a, const FixedFloat& b) {
+    View v(r);
+    const View va(a), vb(b);
+    f(v.x, va.x, vb.x, MPFR_RNDN);
+    r.take(v);
+  }
+  template <typename F>
+  static FixedFloat call(F f, const FixedFloat& a, const FixedFloat& b) {
+    FixedFloat r;
+    call_into(r, f, a, b);
+    return r;
+  }
+  template <typename F>
+  static FixedFloat call(F f, const FixedFloat& a) {
+    FixedFloat r;
+    View v(r);
+    const View va(a);
+    f(v.x, va.x, MPFR_RNDN);
+    r.take(v);
+    return r;
+  }
+
+  Kind kind() const { return kind_; }
+  bool negative() const { return neg_; }
+  std::int64_t exponent() const { return e_; }
+  const std::array<Limb, kLimbs>& limbs() const { return m_; }
+
+  friend FixedFloat operator-(FixedFloat a) {
+    a.neg_ = !a.neg_;
+    return a;
+  }
+  // Every path writes the one result object (returned in place: a copy of a number just written limb by
+  // limb is read back wider than it was stored, which stalls). Out of line, as add: a kernel makes
+  // hundreds of these calls.
+  [[gnu::noinline]] friend FixedFloat operator*(const FixedFloat& a, const FixedFloat& b) {
+    FixedFloat out;
+    if (a.kind_ == kRegular && b.kind_ == kRegular) {
+      Limb w[2 * kLimbs];
+      if (&a == &b) mpn_sqr(w, a.m_.data(), kLimbs);
+      else mpn_mul_n(w, a.m_.data(), b.m_.data(), kLimbs);
+      // GMP stored the product limb by limb: read it so, not in wider vector loads that would wait on
+      // those stores (each limb through a register).
+      Limb p[2 * kLimbs];
+      for (int k = 0; k < 2 * kLimbs; ++k) p[k] = in_register(w[k]);
+      std::int64_t e = a.e_ + b.e_;
+      bool sticky = false;
+      if (p[2 * kLimbs - 1] >> 63) {
+        for (int k = 0; k < kLimbs; ++k) out.m_[k] = p[kLimbs + k];
+        for (int i = 0; i < kLimbs; ++i) sticky = sticky || p[i] != 0;
+      } else {  // the product lies in [1/4, 1/2): one place more
+        for (int k = 0; k < kLimbs; ++k) out.m_[k] = (p[kLimbs + k] << 1) | (p[kLimbs + k - 1] >> 63);
+        sticky = (p[kLimbs - 1] << 1) != 0;
+        for (int i = 0; i < kLimbs - 1; ++i) sticky = sticky || p[i] != 0;
+        --e;
+      }
+      if (!out.round(sticky, e, a.neg_ != b.neg_)) call_into(out, mpfr_mul, a, b);
+    } else if ((a.kind_ == kZero && b.kind_ <= kRegular) || (b.kind_ == kZero && a.kind_ <= kRegular)) {
+      out.neg_ = a.neg_ != b.neg_;
+    } else {
+      call_into(out, mpfr_mul, a, b);
+    }
+    return out;
+  }
+  friend FixedFloat operator+(const FixedFloat& a, const FixedFloat& b) { return add(a, b, false); }
+  friend FixedFloat operator-(const FixedFloat& a, const FixedFloat& b) { return add(a, b, true); }
+  friend FixedFloat operator/(const FixedFloat& a, const FixedFloat& b) { return call(mpfr_div, a, b); }
+  FixedFloat& operator+=(const FixedFloat& b) { return *this = *this + b; }
+  FixedFloat& operator-=(const FixedFloat& b) { return *this = *this - b; }
+  FixedFloat& operator*=(const FixedFloat& b) { return *this = *this * b; }
+  FixedFloat& operator/=(const FixedFloat& b) { return *this = *this / b; }
+
+  // -1, 0, 1 as a < b, a == b, a > b; 2 unordered (a NaN).
+  friend int compare(const FixedFloat& a, const FixedFloat& b) {
+    if (a.kind_ == kNaN || b.kind_ == kNaN) return 2;
+    if (a.kind_ == kZero && b.kind_ == kZero) return 0;
+    const int sa = a.sign(), sb = b.sign();
+    if (sa != sb) return sa < sb ? -1 : 1;
+    const int mag = compare_magnitude(a, b);
+    return sa < 0 ? -mag : mag;
+  }
+  friend bool operator==(const FixedFloat& a, const FixedFloat& b) { return compare(a, b) == 0; }
+  friend bool operator!=(const FixedFloat& a, const FixedFloat& b) { return compare(a, b) != 0; }
+  friend bool operator<(const FixedFloat& a, const FixedFloat& b) { return compare(a, b) == -1; }
+  friend bool operator>(const FixedFloat& a, const FixedFloat& b) { return compare(a, b) == 1; }
+  friend bool operator<=(const FixedFloat& a, const FixedFloat& b) { return static_cast<unsigned>(compare(a, b) + 1) <= 1; }
+  friend bool operator>=(const FixedFloat& a, const FixedFloat& b) { return static_cast<unsigned>(compare(a, b)) <= 1; }
+
+  explicit operator double() const {
+    const View v(*this);
+    return mpfr_get_d(v.x, MPFR_RNDN);
+  }
+  explicit operator bool() const { return kind_ != kZero; }
+
+  static FixedFloat pi() {
+    FixedFloat r;
+    View v(r);
+    mpfr_const_pi(v.x, MPFR_RNDN);
+    r.take(v);
+    return r;
+  }
+
+ private:
+  std::array<Limb, kLimbs> m_{};  // m_[kLimbs - 1] most significant
+  std::int64_t e_ = 0;
+  Kind kind_ = kZero;
+  bool neg_ = false;
+
+  int sign() const { return kind_ == kZero ? 0 : neg_ ? -1 : 1; }
+
+  void set_integer(bool neg, std::uint64_t v) {
+    neg_ = neg;
+    if (v == 0) return;
+    const int z = std::countl_zero(v);
+    m_[kLimbs - 1] = v << z;  // 64 bits fit in P
+    kind_ = kRegular, e_ = 64 - z;
+  }
+
+  // |a| against |b|, both neither NaN.
+  static int compare_magnitude(const FixedFloat& a, const FixedFloat& b) {
+    if (a.kind_ != b.kind_) {
+      const int ra = a.kind_ == kZero ? 0 : a.kind_ == kRegular ? 1 : 2, rb = b.kind_ == kZero ? 0 : b.kind_ == kRegular ? 1 : 2;
+      return ra < rb ? -1 : 1;
+    }
+    if (a.kind_ != kRegular) return 0;
+    if (a.e_ != b.e_) return a.e_ < b.e_ ? -1 : 1;
+    for (int i = kLimbs - 1; i >= 0; --i)
+      if (a.m_[i] != b.m_[i]) return a.m_[i] < b.m_[i] ? -1 : 1;
+    return 0;
+  }
+
+  static Limb in_register(Limb x) {
+    asm("" : "+r"(x));
+    return x;
+  }
+
+  // This number as the exact value (0.m + below) x 2^e rounded to nearest, ties to even: m_ holds the
+  // kLimbs limbs from the leading one, `sticky` whether anything nonzero lies below them. False where the
+  // result leaves the fast exponent range (MPFR's call then decides it).
+  bool round(bool sticky, std::int64_t e, bool neg) {
+    constexpr Limb half = Limb{1} << (kSpare - 1), below = half - 1;
+    sticky = sticky || (m_[0] & below) != 0;
+    const bool up = (m_[0] & half) != 0 && (sticky || ((m_[0] >> kSpare) & 1));
+    m_[0] &= ~((half << 1) - 1);
+    if (up) {
+      Limb carry = Limb{1} << kSpare;
+      for (int i = 0; i < kLimbs && carry; ++i) {
+        m_[i] += carry;
+        carry = m_[i] < carry;
+      }
+      if (carry) {  // 0.111...1 rounded up to 1: 0.1 x 2^(e + 1)
+        m_[kLimbs - 1] = Limb{1} << 63;
+        ++e;
+      }
+    }
+    if (e > kFastExponent || e < -kFastExponent) return false;
+    kind_ = kRegular, e_ = e, neg_ = neg;
+    return true;
+  }
+
+  // a + b, or a - b when `subtract`, written into the one result object as operator* does.
+  [[gnu::noinline]] static FixedFloat add(const FixedFloat& a, const FixedFloat& b, bool subtract) {
+    FixedFloat out;
+    const bool nb = b.neg_ != subtract;
+    if (a.kind_ == kRegular && b.kind_ == kRegular) {
+      const bool b_larger = compare_magnitude(a, b) < 0;
+      const FixedFloat& x = b_larger ? b : a;  // |x| >= |y|
+      const FixedFloat& y = b_larger ? a : b;
+      const bool nx = b_larger ? nb : a.neg_, ny = b_larger ? a.neg_ : nb;
+      const std::int64_t d = x.e_ - y.e_;
+      if (d > P + 1) {
+        // |y| < 2^(e_x - P - 2), a quarter of x's last place and below half of the place under x (x a
+        // power of two): the sum rounds to x either way.
+        out.m_ = x.m_, out.kind_ = kRegular, out.e_ = x.e_, out.neg_ = nx;
+        return out;
+      }
+      if (!sum_into(out, x, y, d, nx, nx != ny)) call_into(out, subtract ? mpfr_sub : mpfr_add, a, b);
+    } else if (a.kind_ <= kRegular && b.kind_ <= kRegular) {
+      // A zero: the other operand exactly; two zeros: -0 only when both are negative.
+      if (b.kind_ == kZero) {
+        out = a;
+        if (a.kind_ == kZero) out.neg_ = a.neg_ && nb;
+      } else {
+        out = b;
+        out.neg_ = nb;
+      }
+    } else {
+      call_into(out, subtract ? mpfr_sub : mpfr_add, a, b);
+    }
+    return out;
+  }
+
+  // x + y (or x - y when `differ`), |x| >= |y| both regular, d = e_x - e_y <= P + 1, with x's sign `nx`.
+  static bool sum_into(FixedFloat& out, const FixedFloat& x, const FixedFloat& y, std::int64_t d, bool nx, bool differ) {
+    // In kLimbs + 1 limbs, x's and a guard limb below them: y shifted right by d, and whether any of
+    // its bits fell below the guard limb (y holds at most kLimbs limbs, so d < 64 makes none fall).
+    using Wide = unsigned __int128;
+    constexpr int n = kLimbs + 1;
+    Limb yd[n], sum[n];
+    const int q = static_cast<int>(d / 64), s = static_cast<int>(d % 64);
+    // y's limb i sits in limb i + 1 before the shift; source(k) is that layout's limb k.
+    auto source = [&](int k) { return k >= 1 && k <= kLimbs ? y.m_[k - 1] : Limb{0}; };
+    for (int j = 0; j < n; ++j) yd[j] = (source(j + q) >> s) | ((source(j + q + 1) << 1) << (63 - s));
+    bool sticky = ((source(q) << 1) << (63 - s)) != 0;  // the low s bits of limb q
+    for (int k = 1; k < q && !sticky; ++k) sticky = source(k) != 0;
+    std::int64_t e = x.e_;
+    if (!differ) {
+      Limb carry = 0;
+      sum[0] = yd[0];
+      for (int j = 1; j < n; ++j) {
+        const Wide t = static_cast<Wide>(x.m_[j - 1]) + yd[j] + carry;
+        sum[j] = static_cast<Limb>(t), carry = static_cast<Limb>(t >> 64);
+      }
+      if (carry) {  // in [1, 2): one place right, the bit shifted out of the guard limb into the sticky
+        sticky = sticky || (sum[0] & 1);
+        for (int j = 0; j < n - 1; ++j) sum[j] = (sum[j] >> 1) | (sum[j + 1] << 63);
+        sum[n - 1] = (sum[n - 1] >> 1) | (Limb{1} << 63);
+        ++e;
+      }
+    } else {
+      // x - y exactly is the difference of the n limbs less a fraction of the guard limb's last place
+      // when bits fell below it: the difference less one whole place, plus a fraction in (0, 1).
+      Limb borrow = sticky ? 1 : 0;
+      for (int j = 0; j < n; ++j) {
+        const Wide t = static_cast<Wide>(j == 0 ? Limb{0} : x.m_[j - 1]) - yd[j] - borrow;
+        sum[j] = static_cast<Limb>(t), borrow = static_cast<Limb>(t >> 64) & 1;
+      }
+      // |x| > |y| leaves a positive difference. With d >= 2 it exceeds |x| / 2: one place at most to
+      // shift. With d <= 1 nothing fell below (sticky false) and the difference is exact in n limbs,
+      // however far it cancelled.
+      int top = n - 1;
+      while (top >= 0 && sum[top] == 0) --top;
+      if (top < 0) {  // x - x: +0 to nearest
+        out.kind_ = kZero, out.neg_ = false;
+        return true;
+      }
+      const int c = std::countl_zero(sum[top]);
+      const int shift = 64 * (n - 1 - top) + c;
+      const int lq = shift / 64, ls = shift % 64;
+      for (int j = n - 1; j >= 0; --j) {
+        const Limb hi = j - lq >= 0 ? sum[j - lq] : 0, lo = j - lq - 1 >= 0 ? sum[j - lq - 1] : 0;
+        sum[j] = (hi << ls) | ((lo >> 1) >> (63 - ls));
+      }
+      e -= shift;
+    }
+    for (int k = 0; k < kLimbs; ++k) out.m_[k] = sum[k + 1];
+    return out.round(sticky || sum[0] != 0, e, nx);
+  }
+};
+
+template <int P>
+FixedFloat<P> abs(const FixedFloat<P>& x) {
+  return x.negative() ? -x : x;
+}
+template <int P>
+FixedFloat<P> fabs(const FixedFloat<P>& x) {
+  return abs(x);
+}
+template <int P>
+FixedFloat<P> sqrt(const FixedFloat<P>& x) {
+  return FixedFloat<P>::call(mpfr_sqrt, x);
+}
+template <int P>
+FixedFloat<P> floor(const FixedFloat<P>& x) {
+  return FixedFloat<P>::call([](mpfr_ptr r, mpfr_srcptr a, mpfr_rnd_t) { return mpfr_floor(r, a); }, x);
+}
+template <int P>
+FixedFloat<P> atan2(const FixedFloat<P>& y, const FixedFloat<P>& x) {
+  return FixedFloat<P>::call(mpfr_atan2, y, x);
+}
+// Not MPFR's correctly rounded mpfr_hypot: Boost.Multiprecision's (1.74, default_ops.hpp eval_hypot), step
+// by step, which is what its MPFR numbers compute and what this type must reproduce.
+template <int P>
+FixedFloat<P> hypot(FixedFloat<P> x, FixedFloat<P> y) {
+  using F = FixedFloat<P>;
+  x = abs(x), y = abs(y);
+  if (x.kind() == F::kZero) return y;
+  if (y.kind() == F::kZero) return x;
+  if (x.kind() == F::kInf) return x;
+  if (y.kind() >= F::kInf) return y;
+  if (x.kind() == F::kNaN) return x;
+  if (y > x) std::swap(x, y);
+  if (x * std::numeric_limits<F>::epsilon() > y) return x;
+  const F rat = y / x;
+  return sqrt(rat * rat + F(1)) * x;
+}
+template <int P>
+bool isfinite(const FixedFloat<P>& x) {
+  return x.kind() <= FixedFloat<P>::kRegular;
+}
+template <int P>
+bool isnan(const FixedFloat<P>& x) {
+  return x.kind() == FixedFloat<P>::kNaN;
+}
+template <int P>
+bool isinf(const FixedFloat<P>& x) {
+  return x.kind() == FixedFloat<P>::kInf;
+}
+template <int P>
+bool signbit(const FixedFloat<P>& x) {
+  return x.negative();
+}
+
+}  // namespace impact3d::mp
+
+template <int P>
+class std::numeric_limits<impact3d::mp::FixedFloat<P>> {
+  using F = impact3d::mp::FixedFloat<P>;
+
+ public:
+  static constexpr bool is_specialized = true, is_signed = true, is_integer = false, is_exact = false;
+  static constexpr bool has_infinity = true, has_quiet_NaN = true, is_iec559 = false, is_bounded = true;
+  static constexpr int radix = 2, digits = P;
+  static constexpr int digits10 = static_cast<int>((P - 1) * 301LL / 1000);
+  static constexpr int max_digits10 = static_cast<int>(P * 301LL / 1000) + 2;
+  static constexpr std::float_round_style round_style = std::round_to_nearest;
+  static F epsilon() { return F::call([](mpfr_ptr r, mpfr_srcptr, mpfr_rnd_t) { return mpfr_set_ui_2exp(r, 1, 1 - P, MPFR_RNDN); }, F()); }
+  static F infinity() { return F(HUGE_VAL); }
+  static F quiet_NaN() { return F(std::numeric_limits<double>::quiet_NaN()); }
+  // As Boost states it for its MPFR numbers (the number this type stands in for): 2^(emax - 1).
+  static F max() {
+    return F::call([](mpfr_ptr r, mpfr_srcptr, mpfr_rnd_t) { return mpfr_set_ui_2exp(r, 1, mpfr_get_emax() - 1, MPFR_RNDN); }, F());
+  }
+  static F lowest() { return -max(); }
+  static F min() {
+    return F::call([](mpfr_ptr r, mpfr_srcptr, mpfr_rnd_t) { return mpfr_set_ui_2exp(r, 1, mpfr_get_emin() - 1, MPFR_RNDN); }, F());
+  }
+};

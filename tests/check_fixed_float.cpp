@@ -1,0 +1,262 @@
+// FixedFloat's own +, - and x against MPFR's calls at the same precision, bit for bit: sign, kind,
+// exponent and every limb; its other functions against Boost's MPFR numbers (float100), which it stands
+// in for on the lean route; and that route's scene from raw parameters against the same computed in
+// Boost's numbers. (check_lean holds the lean solve at 100 digits, computed in FixedFloat, to analyze's
+// in Boost's numbers bit for bit.) The operands are drawn to reach each path of the rounding: exponents apart by
+// 0 to P + 3 places (full overlap, partial, and y wholly below x's round bit), near-equal magnitudes
+// (cancellation to few bits), significands with long runs of ones (carries through every limb, rounding up
+// to the next power of two), exact ties (a last bit beside a half), signed zeros, infinities, NaNs, and
+// exponents beyond the fast range (MPFR's own call must then be taken).
+#include <catch2/catch.hpp>
+
+#include <bit>
+#include <random>
+#include <vector>
+
+#include "impact3d/numeric/fixed_float.hpp"
+#include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/numeric/raw_collision.hpp"
+#include "support.hpp"
+
+using F = impact3d::mp::FixedFloat<334>;
+
+namespace {
+
+constexpr int kP = 334;
+
+// An MPFR number of precision kP.
+struct Mpfr {
+  mpfr_t x;
+  Mpfr() { mpfr_init2(x, kP); }
+  ~Mpfr() { mpfr_clear(x); }
+  Mpfr(const Mpfr&) = delete;
+  Mpfr& operator=(const Mpfr&) = delete;
+};
+
+// Whether f is exactly MPFR's x: the same kind, sign (NaN's aside) and bits.
+bool same(const F& f, mpfr_srcptr x) {
+  if (mpfr_nan_p(x)) return f.kind() == F::kNaN;
+  if (f.kind() == F::kNaN) return false;
+  if ((mpfr_signbit(x) != 0) != f.negative()) return false;
+  if (mpfr_inf_p(x)) return f.kind() == F::kInf;
+  if (mpfr_zero_p(x)) return f.kind() == F::kZero;
+  if (f.limbs()[0] & ((F::Limb{1} << F::kSpare) - 1)) return false;  // bits below the last place
+  if (!(f.limbs()[F::kLimbs - 1] >> 63)) return false;                // normalized
+  Mpfr back;
+  f.to(back.x);
+  return f.kind() == F::kRegular && mpfr_equal_p(back.x, x) && mpfr_get_exp(back.x) == mpfr_get_exp(x);
+}
+
+// Significands drawn to reach carries, ties and cancellations.
+struct Draw {
+  std::mt19937_64 g{20261127};
+  void significand(mpfr_ptr x) {
+    mpz_t z;
+    mpz_init(z);
+    switch (g() % 5) {
+      case 0:  // uniform
+        for (int i = 0; i < 6; ++i) mpz_mul_2exp(z, z, 64), mpz_add_ui(z, z, g());
+        break;
+      case 1:  // all ones but a few of the last bits
+        mpz_set_ui(z, 1), mpz_mul_2exp(z, z, kP), mpz_sub_ui(z, z, 1 + g() % 8);
+        break;
+      case 2:  // a power of two, or one place above it
+        mpz_set_ui(z, 1), mpz_mul_2exp(z, z, kP - 1), mpz_add_ui(z, z, g() % 2);
+        break;
+      case 3:  // few bits set: products and sums that are exact or lie on a tie
+        mpz_set_ui(z, 1), mpz_mul_2exp(z, z, kP - 1);
+        for (int k = 0, n = 1 + g() % 4; k < n; ++k) mpz_setbit(z, g() % kP);
+        break;
+      default:  // uniform in the high bits, zeros below
+        mpz_set_ui(z, g() | (1ULL << 63)), mpz_mul_2exp(z, z, kP - 64);
+        break;
+    }
+    mpz_setbit(z, kP - 1);
+    mpfr_set_z_2exp(x, z, -kP, MPFR_RNDN);  // in [1/2, 1), exact (kP bits)
+    mpz_clear(z);
+    if (g() % 2) mpfr_neg(x, x, MPFR_RNDN);
+  }
+  // x with exponent e; sometimes y close to x (cancellation).
+  void pair(mpfr_ptr x, mpfr_ptr y) {
+    significand(x);
+    mpfr_mul_2si(x, x, static_cast<long>(g() % 41) - 20, MPFR_RNDN);
+    const int how = static_cast<int>(g() % 4);
+    if (how == 0) {  // x +- a few places
+      mpfr_set(y, x, MPFR_RNDN);
+      for (int k = 0, n = 1 + g() % 3; k < n; ++k) g() % 2 ? mpfr_nextabove(y) : mpfr_nextbelow(y);
+      if (g() % 2) mpfr_neg(y, y, MPFR_RNDN);
+    } else {
+      significand(y);
+      const long d = how == 1 ? static_cast<long>(g() % (kP + 4)) : static_cast<long>(g() % 70) - 35;
+      mpfr_mul_2si(y, y, mpfr_get_exp(x) - d, MPFR_RNDN);
+    }
+  }
+};
+
+template <typename Op, typename Ref>
+int agree(const F& a, const F& b, mpfr_srcptr ma, mpfr_srcptr mb, Op op, Ref ref) {
+  Mpfr want;
+  ref(want.x, ma, mb, MPFR_RNDN);
+  const F got = op(a, b);
+  INFO("a = " << mpfr_get_d(ma, MPFR_RNDN) << ", b = " << mpfr_get_d(mb, MPFR_RNDN));
+  REQUIRE(same(got, want.x));
+  return 1;
+}
+
+int agree_all(mpfr_srcptr ma, mpfr_srcptr mb) {
+  const F a = F::of(ma), b = F::of(mb);
+  REQUIRE(same(a, ma));
+  REQUIRE(same(b, mb));
+  int n = 0;
+  n += agree(a, b, ma, mb, [](const F& x, const F& y) { return x + y; }, mpfr_add);
+  n += agree(a, b, ma, mb, [](const F& x, const F& y) { return x - y; }, mpfr_sub);
+  n += agree(a, b, ma, mb, [](const F& x, const F& y) { return x * y; }, mpfr_mul);
+  n += agree(a, b, ma, mb, [](const F& x, const F& y) { return x / y; }, mpfr_div);
+  // Comparisons as MPFR's (NaN unordered).
+  CHECK((a < b) == (mpfr_less_p(ma, mb) != 0));
+  CHECK((a <= b) == (mpfr_lessequal_p(ma, mb) != 0));
+  CHECK((a == b) == (mpfr_equal_p(ma, mb) != 0));
+  CHECK((a >= b) == (mpfr_greaterequal_p(ma, mb) != 0));
+  CHECK((a > b) == (mpfr_greater_p(ma, mb) != 0));
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("FixedFloat's +, -, x and / are MPFR's, bit for bit, on drawn operands", "[fixed_float]") {
+  REQUIRE(mpfr_get_emax() == MPFR_EMAX_DEFAULT);  // the fast range assumes MPFR's default exponents
+  Draw d;
+  Mpfr x, y;
+  int checked = 0;
+  constexpr int kPairs = 200000;
+  for (int k = 0; k < kPairs; ++k) {
+    d.pair(x.x, y.x);
+    checked += agree_all(x.x, y.x);
+  }
+  CHECK(checked == 4 * kPairs);
+}
+
+TEST_CASE("FixedFloat's special values and the edges of the fast range are MPFR's", "[fixed_float]") {
+  std::vector<Mpfr> values(14);
+  mpfr_set_zero(values[0].x, 1), mpfr_set_zero(values[1].x, -1);
+  mpfr_set_inf(values[2].x, 1), mpfr_set_inf(values[3].x, -1), mpfr_set_nan(values[4].x);
+  mpfr_set_ui(values[5].x, 1, MPFR_RNDN), mpfr_set_si(values[6].x, -3, MPFR_RNDN);
+  // Beyond the fast range, at and beyond MPFR's: products overflow and underflow as MPFR's do.
+  mpfr_set_ui_2exp(values[7].x, 3, (1L << 28) - 2, MPFR_RNDN);
+  mpfr_set_ui_2exp(values[8].x, 5, -(1L << 28), MPFR_RNDN);
+  mpfr_set_ui_2exp(values[9].x, 1, mpfr_get_emax() - 1, MPFR_RNDN);
+  mpfr_set_ui_2exp(values[10].x, 1, mpfr_get_emin(), MPFR_RNDN);
+  mpfr_set_si_2exp(values[11].x, -7, (1L << 29), MPFR_RNDN);
+  // The largest significand: its successor is the next power of two.
+  mpfr_set_inf(values[12].x, 1), mpfr_nextbelow(values[12].x), mpfr_div_2ui(values[12].x, values[12].x, 1L << 29, MPFR_RNDN);
+  mpfr_set_d(values[13].x, 0.1, MPFR_RNDN);
+  int checked = 0;
+  for (const auto& a : values)
+    for (const auto& b : values) checked += agree_all(a.x, b.x);
+  CHECK(checked == 4 * 14 * 14);
+}
+
+TEST_CASE("FixedFloat's conversions from integers and doubles are exact", "[fixed_float]") {
+  std::mt19937_64 g(7);
+  Mpfr want;
+  int checked = 0;
+  for (int k = 0; k < 10000; ++k) {
+    const long long i = static_cast<long long>(g());
+    mpfr_set_si(want.x, i, MPFR_RNDN);
+    REQUIRE(same(F(i), want.x));
+    const double v = std::bit_cast<double>(g());  // every double, subnormals, infinities and NaNs included
+    mpfr_set_d(want.x, v, MPFR_RNDN);
+    REQUIRE(same(F(v), want.x));
+    REQUIRE((std::isnan(v) || static_cast<double>(F(v)) == v));
+    ++checked;
+  }
+  for (const long long i : {0LL, 1LL, -1LL, std::numeric_limits<long long>::min(), std::numeric_limits<long long>::max()}) {
+    mpfr_set_si(want.x, i, MPFR_RNDN);
+    REQUIRE(same(F(i), want.x));
+  }
+  mpfr_set_d(want.x, -0.0, MPFR_RNDN);
+  REQUIRE(same(F(-0.0), want.x));
+  CHECK(checked == 10000);
+}
+
+namespace {
+
+using B = impact3d::mp::float100;
+
+bool same_as_boost(const F& f, const B& b) { return same(f, b.backend().data()); }
+
+}  // namespace
+
+TEST_CASE("FixedFloat's sqrt, floor, atan2, hypot, abs and limits are Boost's MPFR numbers'", "[fixed_float]") {
+  using std::numeric_limits;
+  CHECK(same_as_boost(numeric_limits<F>::epsilon(), numeric_limits<B>::epsilon()));
+  CHECK(same_as_boost(numeric_limits<F>::max(), (numeric_limits<B>::max)()));
+  CHECK(same_as_boost(numeric_limits<F>::lowest(), numeric_limits<B>::lowest()));
+  CHECK(same_as_boost(numeric_limits<F>::min(), (numeric_limits<B>::min)()));
+  CHECK(same_as_boost(numeric_limits<F>::infinity(), numeric_limits<B>::infinity()));
+  CHECK(same_as_boost(F::pi(), boost::math::constants::pi<B>()));
+  CHECK(numeric_limits<F>::digits == numeric_limits<B>::digits);
+  Draw d;
+  Mpfr x, y;
+  int checked = 0;
+  for (int k = 0; k < 20000; ++k) {
+    d.pair(x.x, y.x);
+    if (k % 7 == 0) mpfr_mul_2ui(y.x, x.x, 200, MPFR_RNDN);  // hypot's early return: x below y's last place
+    if (k % 11 == 0) mpfr_set_zero(x.x, k % 2 ? 1 : -1);
+    const F a = F::of(x.x), b = F::of(y.x);
+    B ba, bb;
+    mpfr_set(ba.backend().data(), x.x, MPFR_RNDN);
+    mpfr_set(bb.backend().data(), y.x, MPFR_RNDN);
+    REQUIRE(same_as_boost(sqrt(abs(a)), sqrt(abs(ba))));
+    REQUIRE(same_as_boost(floor(a * F(1000)), floor(ba * B(1000))));
+    REQUIRE(same_as_boost(atan2(a, b), atan2(ba, bb)));
+    REQUIRE(same_as_boost(hypot(a, b), hypot(ba, bb)));
+    REQUIRE(same_as_boost(hypot(b, a), hypot(bb, ba)));
+    REQUIRE(static_cast<double>(a) == static_cast<double>(ba));
+    ++checked;
+  }
+  CHECK(checked == 20000);
+}
+
+TEST_CASE("The scene from raw parameters at 100 digits, computed in FixedFloat, is Boost's bit for bit", "[fixed_float]") {
+  using namespace impact3d;
+  std::mt19937_64 g(20261128);
+  std::uniform_real_distribution<double> u(0, 1);
+  // Angles anywhere, and at the quarter turns and half-way between them, where sin_cos_deg's floors
+  // decide the quadrant.
+  auto angle = [&](int k) {
+    switch (k % 4) {
+      case 0: return -1000 + 2000 * u(g);
+      case 1: return 90.0 * static_cast<int>(g() % 17) - 720;
+      case 2: return 45.0 + 90.0 * static_cast<int>(g() % 17) - 720;
+      default: return -30 + 60 * u(g);
+    }
+  };
+  int checked = 0;
+  for (int k = 0; k < 400; ++k) {
+    RawCollision<B> raw;
+    for (auto& v : raw.vehicle) {
+      v.mass = B(700 + 2800 * u(g));
+      for (int p = 0; p < 3; ++p)
+        for (int q = 0; q < 3; ++q) v.J_B(p, q) = B(p == q ? 3000 * u(g) + 300 : 200 * u(g) - 100);
+      v.yaw_deg = B(angle(k)), v.pitch_deg = B(angle(k + 1)), v.roll_deg = B(angle(k + 2));
+      for (int p = 0; p < 3; ++p) v.v_W(p) = B(40 * u(g) - 20), v.w_B(p) = B(u(g) - 0.5), v.p_CgIc_B(p) = B(4 * u(g) - 2);
+    }
+    raw.normal_yaw_deg = B(angle(k + 3)), raw.normal_pitch_deg = B(angle(k)), raw.tangent_roll_deg = B(angle(k + 1));
+    raw.restitution = B(u(g));
+    const Scene<B> twin = scene_of(raw), boost = compute_scene(raw);
+    const auto same_matrix = [](const auto& m, const auto& n) {
+      for (Eigen::Index i = 0; i < m.rows(); ++i)
+        for (Eigen::Index j = 0; j < m.cols(); ++j)
+          if (!(m(i, j) == n(i, j)) || signbit(m(i, j)) != signbit(n(i, j))) return false;
+      return true;
+    };
+    for (int i = 0; i < 2; ++i) {
+      REQUIRE(same_matrix(twin.body[i].R_WB, boost.body[i].R_WB));
+      REQUIRE(same_matrix(twin.body[i].J_B, boost.body[i].J_B));
+    }
+    REQUIRE(same_matrix(twin.R_WC, boost.R_WC));
+    ++checked;
+  }
+  CHECK(checked == 400);
+}
