@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 namespace impact3d::mp {
@@ -165,6 +166,28 @@ class FixedFloat {
   }
   friend FixedFloat operator+(const FixedFloat& a, const FixedFloat& b) { return add(a, b, false); }
   friend FixedFloat operator-(const FixedFloat& a, const FixedFloat& b) { return add(a, b, true); }
+  // Boost's numbers without expression templates subtract a temporary on the right in place, and a
+  // number from a built-in one, as -(b - a): the same value but for an exact zero, which comes out -0
+  // rather than +0. So here: a temporary on the right of a number, and any number on the right of a
+  // built-in one, -(b - a); two temporaries, or a built-in number on the right, plainly, as Boost's
+  // overloads do (no_et_ops.hpp, default_ops.hpp's eval_subtract_default).
+  friend FixedFloat operator-(const FixedFloat& a, FixedFloat&& b) { return -add(b, a, true); }
+  friend FixedFloat operator-(FixedFloat&& a, FixedFloat&& b) { return add(a, b, true); }
+  template <typename V>
+    requires std::is_arithmetic_v<V>
+  friend FixedFloat operator-(V a, FixedFloat&& b) {
+    return -add(b, FixedFloat(a), true);
+  }
+  template <typename V>
+    requires std::is_arithmetic_v<V>
+  friend FixedFloat operator-(V a, const FixedFloat& b) {
+    return -add(b, FixedFloat(a), true);
+  }
+  template <typename V>
+    requires std::is_arithmetic_v<V>
+  friend FixedFloat operator-(const FixedFloat& a, V b) {
+    return add(a, FixedFloat(b), true);
+  }
   friend FixedFloat operator/(const FixedFloat& a, const FixedFloat& b) { return call(mpfr_div, a, b); }
   FixedFloat& operator+=(const FixedFloat& b) { return *this = *this + b; }
   FixedFloat& operator-=(const FixedFloat& b) { return *this = *this - b; }
@@ -374,7 +397,9 @@ FixedFloat<P> atan2(const FixedFloat<P>& y, const FixedFloat<P>& x) {
 template <int P>
 FixedFloat<P> hypot(FixedFloat<P> x, FixedFloat<P> y) {
   using F = FixedFloat<P>;
-  x = abs(x), y = abs(y);
+  // Boost negates an argument whose sign is negative: not -0 (sign 0) nor a NaN.
+  if (x.negative() && (x.kind() == F::kRegular || x.kind() == F::kInf)) x = -x;
+  if (y.negative() && (y.kind() == F::kRegular || y.kind() == F::kInf)) y = -y;
   if (x.kind() == F::kZero) return y;
   if (y.kind() == F::kZero) return x;
   if (x.kind() == F::kInf) return x;

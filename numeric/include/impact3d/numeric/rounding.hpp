@@ -100,12 +100,16 @@ Scalar spd_condition(const Mat3<Scalar>& M) {
   }
 }
 
-// ||M||_F ||M^-1||_F for a multiprecision M, computed in double, where that bounds it: M's entries
-// rounded to double (each within 2^-53 of itself, a perturbation of M within 2^-53 ||M||), scaled by a
-// power of two to at most 1. Where the double adjugate finds M positive definite with the product at
-// most 2^12, its errors (the determinant's within about 10 u kappa^2, the adjugate's within 12 u kappa,
-// u = 2^-53) stay below 2^-25 of it, and M itself is positive definite by a margin far beyond them; the
-// product times 1 + 2^-10 is then above the exact one. Elsewhere (an entry outside [2^-900, 2^900], M
+// ||M||_F ||M^-1||_F for a multiprecision M, computed in double, where that bounds it. M's entries are
+// rounded to double (a perturbation within 2^-53 ||M||) and scaled by a power of two so that the largest
+// is in [1/2, 1): for a positive definite M, lambda_max is then in [1/2, 3]. The double determinant is
+// trusted only above 2^-30: its error is within about 10 u ||M||^3 < 2^-44 (u = 2^-53), so its relative
+// error is below 2^-14; lambda_mid >= sqrt(det / lambda_max) then keeps ||adj M|| = det ||M^-1|| above
+// 2^-18, so the adjugate's errors (within 4 u ||M||^2 each) are below 2^-28 of it; the product, a root
+// of the two, is within 2^-13 of the exact one, and times 1 + 2^-10 above it. The guard loses no matrix
+// the bound serves: a product at most 2^12 means kappa <= 2^12 and det >= lambda_max^3 / kappa^2 >=
+// 2^-27. Without it a nearly singular M (two eigenvalues 2^-50 of the third) rounds to a determinant of
+// rounding noise that can pass for a small one. Elsewhere (an entry outside [2^-900, 2^900], M
 // indefinite or worse conditioned) empty: the scalar's own arithmetic decides. The lean path uses the
 // bound only to decide what is far from a limit, so a larger valid bound changes no result.
 template <typename Scalar>
@@ -125,7 +129,7 @@ std::optional<double> spd_condition_bound_in_double(const Mat3<Scalar>& M) {
   const double A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;
   const double D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
   const double det = a * A + b * B + c * C;
-  if (!(a > 0) || !(F > 0) || !(det > 0)) return std::nullopt;
+  if (!(a > 0) || !(F > 0) || !(det > 0x1p-30)) return std::nullopt;
   const double norm2 = a * a + d * d + f * f + 2 * (b * b + c * c + e * e);
   const double inverse2 = (A * A + D * D + F * F + 2 * (B * B + C * C + E * E)) / (det * det);
   const double k = std::sqrt(norm2 * inverse2);
@@ -135,8 +139,13 @@ std::optional<double> spd_condition_bound_in_double(const Mat3<Scalar>& M) {
 
 // An upper bound of spd_condition without eigenvalues, for the lean path: ||M||_F ||M^-1||_F, at least
 // lambda_max / lambda_min and at most three times it, M^-1 by its adjugate; infinity where M fails
-// Sylvester's test (a leading minor not positive), as spd_condition is where M is indefinite. Beyond
-// long double, in double where that bounds it (above).
+// Sylvester's test (a leading minor not positive), as spd_condition is where M is indefinite, and where
+// the computed determinant is not above 2^20 eps m^3 (m the largest entry): its error is within about
+// 10 eps m^3, so a smaller one may be noise (two eigenvalues far below the third, M nearly of rank one),
+// and the adjugate's product could fall far below kappa; infinity then sends every decision to the
+// computed kappa (so does an m^3 that overflows; one that underflows leaves det > 0, the test before).
+// Above the guard both errors stay below 2^-15 of the product (the argument of the double bound above,
+// with 2^20 eps m^3 in place of 2^-30). Beyond long double, in double where that bounds it (above).
 template <typename Scalar>
 Scalar spd_condition_bound(const Mat3<Scalar>& M) {
   if constexpr (is_exact_v<Scalar>) {
@@ -151,7 +160,11 @@ Scalar spd_condition_bound(const Mat3<Scalar>& M) {
     const Scalar A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;  // first column of the adjugate
     const Scalar D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
     const Scalar det = a * A + b * B + c * C;
-    if (!(a > Scalar(0)) || !(F > Scalar(0)) || !(det > Scalar(0))) return std::numeric_limits<Scalar>::infinity();
+    using std::abs;
+    using std::max;
+    const Scalar m = max(max(max(abs(a), abs(b)), max(abs(c), abs(d))), max(abs(e), abs(f)));
+    if (!(a > Scalar(0)) || !(F > Scalar(0)) || !(det > Scalar(0x1p20) * std::numeric_limits<Scalar>::epsilon() * m * m * m))
+      return std::numeric_limits<Scalar>::infinity();
     const Scalar norm2 = a * a + d * d + f * f + Scalar(2) * (b * b + c * c + e * e);
     const Scalar inverse2 = (A * A + D * D + F * F + Scalar(2) * (B * B + C * C + E * E)) / (det * det);
     const Scalar k = sqrt(norm2 * inverse2);
