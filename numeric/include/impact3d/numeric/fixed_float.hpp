@@ -188,6 +188,11 @@ class FixedFloat {
   friend FixedFloat operator-(const FixedFloat& a, V b) {
     return add(a, FixedFloat(b), true);
   }
+  template <typename V>  // without it, a temporary minus a built-in number is ambiguous under ISO C++
+    requires std::is_arithmetic_v<V>
+  friend FixedFloat operator-(FixedFloat&& a, V b) {
+    return add(a, FixedFloat(b), true);
+  }
   friend FixedFloat operator/(const FixedFloat& a, const FixedFloat& b) { return call(mpfr_div, a, b); }
   FixedFloat& operator+=(const FixedFloat& b) { return *this = *this + b; }
   FixedFloat& operator-=(const FixedFloat& b) { return *this = *this - b; }

@@ -24,6 +24,20 @@ using float50 = boost::multiprecision::number<boost::multiprecision::cpp_bin_flo
 using float100 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<100, boost::multiprecision::allocate_stack>,
                                                boost::multiprecision::et_off>;
 
+// Boost 1.74 computes std::numeric_limits' epsilon, round_error, min, max, infinity and quiet_NaN of
+// its MPFR and cpp_bin_float numbers on the first call, and marks each computed before computing it: a
+// second thread calling in that window reads 0 or 1 (for epsilon, or for infinity). Boost fills them at
+// start-up only for the numbers with expression templates, not for these, so the first rows of a batch
+// at 50 or 100 digits on two threads could be solved with epsilon 0 (CI saw such a row differ from
+// solve's). Filling them here, at start-up, before any thread exists, closes the window.
+template <typename T>
+bool fill_limits() {
+  using L = std::numeric_limits<T>;
+  (void)L::epsilon(), (void)L::round_error(), (void)(L::min)(), (void)(L::max)(), (void)L::infinity(), (void)L::quiet_NaN();
+  return true;
+}
+inline const bool limits_filled = fill_limits<float50>() && fill_limits<float100>();
+
 template <typename T>
 struct NumTraitsFor : Eigen::GenericNumTraits<T> {
   using Real = T;

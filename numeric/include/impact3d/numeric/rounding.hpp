@@ -100,6 +100,23 @@ Scalar spd_condition(const Mat3<Scalar>& M) {
   }
 }
 
+// ||M||_F ||M^-1||_F of the symmetric M with upper triangle m = (a, b, c, d, e, f), M^-1 by its adjugate;
+// empty where M fails Sylvester's test (a or the leading 2x2 minor not positive) or the computed
+// determinant is not above det_floor, below which it may be rounding noise (each caller says why its
+// floor suffices).
+template <typename T>
+std::optional<T> adjugate_condition(const std::array<T, 6>& m, const T& det_floor) {
+  using std::sqrt;
+  const T &a = m[0], &b = m[1], &c = m[2], &d = m[3], &e = m[4], &f = m[5];
+  const T A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;  // first column of the adjugate
+  const T D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
+  const T det = a * A + b * B + c * C;
+  if (!(a > T(0)) || !(F > T(0)) || !(det > det_floor)) return std::nullopt;
+  const T norm2 = a * a + d * d + f * f + T(2) * (b * b + c * c + e * e);
+  const T inverse2 = (A * A + D * D + F * F + T(2) * (B * B + C * C + E * E)) / (det * det);
+  return sqrt(norm2 * inverse2);
+}
+
 // ||M||_F ||M^-1||_F for a multiprecision M, computed in double, where that bounds it. M's entries are
 // rounded to double (a perturbation within 2^-53 ||M||) and scaled by a power of two so that the largest
 // is in [1/2, 1): for a positive definite M, lambda_max is then in [1/2, 3]. The double determinant is
@@ -114,8 +131,8 @@ Scalar spd_condition(const Mat3<Scalar>& M) {
 // bound only to decide what is far from a limit, so a larger valid bound changes no result.
 template <typename Scalar>
 std::optional<double> spd_condition_bound_in_double(const Mat3<Scalar>& M) {
-  double m[6] = {to_double(M(0, 0)), to_double(M(0, 1)), to_double(M(0, 2)),
-                 to_double(M(1, 1)), to_double(M(1, 2)), to_double(M(2, 2))};
+  std::array<double, 6> m = {to_double(M(0, 0)), to_double(M(0, 1)), to_double(M(0, 2)),
+                              to_double(M(1, 1)), to_double(M(1, 2)), to_double(M(2, 2))};
   double big = 0;
   for (const double x : m) {
     if (!std::isfinite(x)) return std::nullopt;
@@ -125,16 +142,9 @@ std::optional<double> spd_condition_bound_in_double(const Mat3<Scalar>& M) {
   int e2;
   std::frexp(big, &e2);
   for (double& x : m) x = std::ldexp(x, -e2);
-  const double a = m[0], b = m[1], c = m[2], d = m[3], e = m[4], f = m[5];
-  const double A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;
-  const double D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
-  const double det = a * A + b * B + c * C;
-  if (!(a > 0) || !(F > 0) || !(det > 0x1p-30)) return std::nullopt;
-  const double norm2 = a * a + d * d + f * f + 2 * (b * b + c * c + e * e);
-  const double inverse2 = (A * A + D * D + F * F + 2 * (B * B + C * C + E * E)) / (det * det);
-  const double k = std::sqrt(norm2 * inverse2);
-  if (!(k <= 0x1p12)) return std::nullopt;
-  return k * (1 + 0x1p-10);
+  const std::optional<double> k = adjugate_condition(m, 0x1p-30);
+  if (!k || !(*k <= 0x1p12)) return std::nullopt;
+  return *k * (1 + 0x1p-10);
 }
 
 // An upper bound of spd_condition without eigenvalues, for the lean path: ||M||_F ||M^-1||_F, at least
@@ -155,20 +165,14 @@ Scalar spd_condition_bound(const Mat3<Scalar>& M) {
   } else {
     if constexpr (std::numeric_limits<Scalar>::digits > 64)
       if (const std::optional<double> k = spd_condition_bound_in_double(M)) return Scalar(*k);
-    using std::sqrt;
-    const Scalar a = M(0, 0), b = M(0, 1), c = M(0, 2), d = M(1, 1), e = M(1, 2), f = M(2, 2);
-    const Scalar A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;  // first column of the adjugate
-    const Scalar D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
-    const Scalar det = a * A + b * B + c * C;
     using std::abs;
-    using std::max;
-    const Scalar m = max(max(max(abs(a), abs(b)), max(abs(c), abs(d))), max(abs(e), abs(f)));
-    if (!(a > Scalar(0)) || !(F > Scalar(0)) || !(det > Scalar(0x1p20) * std::numeric_limits<Scalar>::epsilon() * m * m * m))
-      return std::numeric_limits<Scalar>::infinity();
-    const Scalar norm2 = a * a + d * d + f * f + Scalar(2) * (b * b + c * c + e * e);
-    const Scalar inverse2 = (A * A + D * D + F * F + Scalar(2) * (B * B + C * C + E * E)) / (det * det);
-    const Scalar k = sqrt(norm2 * inverse2);
-    return is_finite(k) ? k : std::numeric_limits<Scalar>::infinity();
+    const std::array<Scalar, 6> m = {M(0, 0), M(0, 1), M(0, 2), M(1, 1), M(1, 2), M(2, 2)};
+    Scalar big = abs(m[0]);
+    for (std::size_t i = 1; i < m.size(); ++i)
+      if (const Scalar x = abs(m[i]); x > big) big = x;
+    const std::optional<Scalar> k = adjugate_condition<Scalar>(
+        m, Scalar(0x1p20) * std::numeric_limits<Scalar>::epsilon() * big * big * big);
+    return k && is_finite(*k) ? *k : std::numeric_limits<Scalar>::infinity();
   }
 }
 
