@@ -59,7 +59,7 @@ void pc_crash_lean(benchmark::State& state) {
   const auto& raw = raw_cases();
   for (auto _ : state)
     for (std::size_t k = 0; k < raw.size(); ++k)
-      benchmark::DoNotOptimize(solve_lean(scene_of(raw[k]), Strategy<double>(PcCrash<double>{cs[k].mu}), W, E));
+      benchmark::DoNotOptimize(solve_lean(raw[k], Strategy<double>(PcCrash<double>{cs[k].mu}), W, E));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
 }
 
@@ -74,7 +74,7 @@ void pc_crash_100(benchmark::State& state) {
   for (auto _ : state)
     for (std::size_t k = 0; k < raw.size(); ++k) {
       if constexpr (Lean)
-        benchmark::DoNotOptimize(solve_lean(scene_of(raw[k]), Strategy<F>(PcCrash<F>{F(cs[k].mu)}), Want::impulse, Engine::generated));
+        benchmark::DoNotOptimize(solve_lean(raw[k], Strategy<F>(PcCrash<F>{F(cs[k].mu)}), Want::impulse, Engine::generated));
       else
         benchmark::DoNotOptimize(analyze(scene_of(raw[k]), {PcCrash<F>{F(cs[k].mu)}}, Engine::generated));
     }

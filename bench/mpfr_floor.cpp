@@ -327,7 +327,7 @@ int main() {
   const auto twin_route = [&] {
     int solved = 0;
     for (std::size_t k = 0; k < raw.size(); ++k)
-      solved += solve_lean(scene_of(raw[k]), Strategy<F>(PcCrash<F>{mu[k]}), Want::impulse, Engine::generated).status == Status::solved;
+      solved += solve_lean(raw[k], Strategy<F>(PcCrash<F>{mu[k]}), Want::impulse, Engine::generated).status == Status::solved;
     return solved;
   };
   route();  // the constants built once per type are not the route's

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "impact3d/numeric/fixed_float.hpp"
+#include "impact3d/numeric/lean.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 #include "impact3d/numeric/raw_collision.hpp"
 #include "support.hpp"
@@ -156,6 +157,39 @@ TEST_CASE("FixedFloat's special values and the edges of the fast range are MPFR'
   CHECK(checked == 4 * 14 * 14);
 }
 
+// The quotient by an integer below 2^32 takes MPFR's division by a machine integer: held here to
+// mpfr_div on the integers that path takes, those just beyond it (2^32, a half-integer), and numerators
+// of every kind, down to where the quotient underflows.
+TEST_CASE("FixedFloat divided by an integer is MPFR's quotient, bit for bit", "[fixed_float]") {
+  Draw d;
+  std::vector<double> divisors{1, -1, 2, 3, -3, 7, 90, -90, 180, -180, 360, 2147483648.0, 4294967295.0, -4294967295.0,
+                               4294967296.0, 4294967297.0, 90.5, 0.5};
+  for (int k = 0; k < 40; ++k) divisors.push_back(static_cast<double>(1 + d.g() % 4294967295ULL) * (k % 2 ? -1 : 1));
+  std::vector<Mpfr> numerators(200);
+  for (std::size_t k = 0; k < numerators.size(); ++k) {
+    Mpfr spare;
+    d.pair(numerators[k].x, spare.x);
+  }
+  mpfr_set_zero(numerators[0].x, 1), mpfr_set_zero(numerators[1].x, -1);
+  mpfr_set_inf(numerators[2].x, -1), mpfr_set_nan(numerators[3].x);
+  mpfr_set_ui_2exp(numerators[4].x, 1, mpfr_get_emin(), MPFR_RNDN);  // the least number: the quotient underflows
+  mpfr_set_ui_2exp(numerators[5].x, 7, mpfr_get_emin() + 1, MPFR_RNDN);
+  mpfr_set_inf(numerators[6].x, 1), mpfr_nextbelow(numerators[6].x);  // the largest
+  Mpfr n, want;
+  int checked = 0;
+  for (const double v : divisors) {
+    mpfr_set_d(n.x, v, MPFR_RNDN);
+    const F b = F::of(n.x);
+    for (const auto& a : numerators) {
+      mpfr_div(want.x, a.x, n.x, MPFR_RNDN);
+      INFO("a = " << mpfr_get_d(a.x, MPFR_RNDN) << ", b = " << v);
+      REQUIRE(same(F::of(a.x) / b, want.x));
+      ++checked;
+    }
+  }
+  CHECK(checked == 58 * 200);
+}
+
 TEST_CASE("FixedFloat's conversions from integers and doubles are exact", "[fixed_float]") {
   std::mt19937_64 g(7);
   Mpfr want;
@@ -255,45 +289,99 @@ TEST_CASE("FixedFloat's exact zeros carry Boost's signs whatever the operands' v
   CHECK(checked == 216);
 }
 
-TEST_CASE("The scene from raw parameters at 100 digits, computed in FixedFloat, is Boost's bit for bit", "[fixed_float]") {
+namespace {
+
+// A collision's raw parameters at 100 digits: angles anywhere, and at the quarter turns and half-way
+// between them, where sin_cos_deg's floors decide the quadrant.
+impact3d::RawCollision<B> random_raw(std::mt19937_64& g, int k) {
   using namespace impact3d;
-  std::mt19937_64 g(20261128);
   std::uniform_real_distribution<double> u(0, 1);
-  // Angles anywhere, and at the quarter turns and half-way between them, where sin_cos_deg's floors
-  // decide the quadrant.
-  auto angle = [&](int k) {
-    switch (k % 4) {
+  auto angle = [&](int j) {
+    switch (j % 4) {
       case 0: return -1000 + 2000 * u(g);
       case 1: return 90.0 * static_cast<int>(g() % 17) - 720;
       case 2: return 45.0 + 90.0 * static_cast<int>(g() % 17) - 720;
       default: return -30 + 60 * u(g);
     }
   };
+  RawCollision<B> raw;
+  for (auto& v : raw.vehicle) {
+    v.mass = B(700 + 2800 * u(g));
+    for (int p = 0; p < 3; ++p)
+      for (int q = 0; q < 3; ++q) v.J_B(p, q) = B(p == q ? 3000 * u(g) + 300 : 200 * u(g) - 100);
+    v.yaw_deg = B(angle(k)), v.pitch_deg = B(angle(k + 1)), v.roll_deg = B(angle(k + 2));
+    for (int p = 0; p < 3; ++p) v.v_W(p) = B(40 * u(g) - 20), v.w_B(p) = B(u(g) - 0.5), v.p_CgIc_B(p) = B(4 * u(g) - 2);
+  }
+  raw.normal_yaw_deg = B(angle(k + 3)), raw.normal_pitch_deg = B(angle(k)), raw.tangent_roll_deg = B(angle(k + 1));
+  raw.restitution = B(u(g));
+  return raw;
+}
+
+bool identical(const B& a, const B& b) { return a == b ? signbit(a) == signbit(b) : (isnan(a) && isnan(b)); }
+template <typename M>
+bool identical_matrix(const M& m, const M& n) {
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    for (Eigen::Index j = 0; j < m.cols(); ++j)
+      if (!identical(m(i, j), n(i, j))) return false;
+  return true;
+}
+bool identical_optional(const std::optional<B>& a, const std::optional<B>& b) {
+  return a.has_value() == b.has_value() && (!a || identical(*a, *b));
+}
+
+}  // namespace
+
+TEST_CASE("The scene from raw parameters at 100 digits, computed in FixedFloat, is Boost's bit for bit", "[fixed_float]") {
+  using namespace impact3d;
+  std::mt19937_64 g(20261128);
   int checked = 0;
   for (int k = 0; k < 400; ++k) {
-    RawCollision<B> raw;
-    for (auto& v : raw.vehicle) {
-      v.mass = B(700 + 2800 * u(g));
-      for (int p = 0; p < 3; ++p)
-        for (int q = 0; q < 3; ++q) v.J_B(p, q) = B(p == q ? 3000 * u(g) + 300 : 200 * u(g) - 100);
-      v.yaw_deg = B(angle(k)), v.pitch_deg = B(angle(k + 1)), v.roll_deg = B(angle(k + 2));
-      for (int p = 0; p < 3; ++p) v.v_W(p) = B(40 * u(g) - 20), v.w_B(p) = B(u(g) - 0.5), v.p_CgIc_B(p) = B(4 * u(g) - 2);
-    }
-    raw.normal_yaw_deg = B(angle(k + 3)), raw.normal_pitch_deg = B(angle(k)), raw.tangent_roll_deg = B(angle(k + 1));
-    raw.restitution = B(u(g));
+    const RawCollision<B> raw = random_raw(g, k);
     const Scene<B> twin = scene_of(raw), boost = compute_scene(raw);
-    const auto same_matrix = [](const auto& m, const auto& n) {
-      for (Eigen::Index i = 0; i < m.rows(); ++i)
-        for (Eigen::Index j = 0; j < m.cols(); ++j)
-          if (!(m(i, j) == n(i, j)) || signbit(m(i, j)) != signbit(n(i, j))) return false;
-      return true;
-    };
     for (int i = 0; i < 2; ++i) {
-      REQUIRE(same_matrix(twin.body[i].R_WB, boost.body[i].R_WB));
-      REQUIRE(same_matrix(twin.body[i].J_B, boost.body[i].J_B));
+      REQUIRE(identical_matrix(twin.body[i].R_WB, boost.body[i].R_WB));
+      REQUIRE(identical_matrix(twin.body[i].J_B, boost.body[i].J_B));
     }
-    REQUIRE(same_matrix(twin.R_WC, boost.R_WC));
+    REQUIRE(identical_matrix(twin.R_WC, boost.R_WC));
     ++checked;
   }
   CHECK(checked == 400);
+}
+
+// solve_lean from raw parameters stays in FixedFloat from the angles to the solution; the route it is held
+// to computes the scene and the solve in Boost's numbers throughout (compute_scene, solve_lean_with).
+TEST_CASE("solve_lean from raw parameters at 100 digits is the solve in Boost's numbers, bit for bit", "[fixed_float]") {
+  using namespace impact3d;
+  using namespace impact3d::test;
+  std::mt19937_64 g(20261127);
+  int compared = 0, solved = 0, not_approaching = 0;
+  for (int k = 0; k < 60; ++k) {
+    const RawCollision<B> raw = random_raw(g, k);
+    const Scene<B> boost_scene = compute_scene(raw);
+    for (const Strategy<double>& st_double : every_strategy(0.05 + 0.02 * k)) {
+      const Strategy<B> st = convert_strategy<B>(st_double, [](double x) { return B(x); });
+      for (Engine e : kEngines) {
+        const LeanSolution<B> lean = solve_lean(raw, st, Want::velocities, e);
+        const LeanSolution<B> boost = e == Engine::direct
+                                          ? solve_lean_with<direct::DirectEngine>(boost_scene, st, Want::velocities)
+                                          : solve_lean_with<GeneratedEngine>(boost_scene, st, Want::velocities);
+        REQUIRE(lean.status == boost.status);
+        CHECK(lean.warnings == boost.warnings);
+        CHECK(lean.impulse.regime == boost.impulse.regime);
+        CHECK(identical_matrix(lean.impulse.P_C, boost.impulse.P_C));
+        CHECK(identical_optional(lean.impulse.gir, boost.impulse.gir));
+        CHECK(identical_optional(lean.impulse.cir, boost.impulse.cir));
+        CHECK(identical_optional(lean.impulse.mu_t_critical, boost.impulse.mu_t_critical));
+        CHECK(identical_matrix(lean.P_W, boost.P_W));
+        for (int i = 0; i < 2; ++i) CHECK((identical_matrix(lean.v_W[i], boost.v_W[i]) && identical_matrix(lean.w_B[i], boost.w_B[i])));
+        ++compared;
+        solved += lean.status == Status::solved;
+        not_approaching += lean.status == Status::not_approaching;
+      }
+    }
+  }
+  CHECK(compared == 60 * static_cast<int>(every_strategy(0).size()) * 2);
+  // Both outcomes met: roughly half the drawn collisions approach along the normal.
+  CHECK(solved > 100);
+  CHECK(not_approaching > 100);
 }

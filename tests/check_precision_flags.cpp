@@ -58,7 +58,8 @@ template <typename T>
 void check(const Analysis<T>& a, const Analysis<F>& ref, Tally& t) {
   const double eps = static_cast<double>(std::numeric_limits<T>::epsilon());
   for (std::size_t k = 0; k < a.solutions.size(); ++k) {
-    const auto &s = a.solutions[k], &r = ref.solutions[k];
+    const auto& s = a.solutions[k];  // apart: one auto declaration may not deduce two types
+    const auto& r = ref.solutions[k];
     ++t.results;
     if (has(s.warnings, WarningCode::rounding) || has(s.warnings, WarningCode::not_finite)) {
       ++t.flagged;

@@ -262,7 +262,9 @@ TEST_CASE("round trip with headings, restitution and a product of inertia unknow
   // degrees right of +y, restitution 0.3, the Malibu's I_xz -60 (both entries). The case given to the
   // fit keeps Figure 8's directions, restitution 0.1 and I_xz -40: the headings are deviations from
   // those directions, in heading_after_deg's sense; I_xz's mirror moves with it.
-  const auto [text, o] = figure8();
+  const auto figure = figure8();  // not bound as [text, o]: a lambda below reads text, which clang 14 cannot capture
+  const std::string& text = figure.first;
+  const ReconstructOptions& o = figure.second;
   auto replaced = [](std::string t, const std::string& from, const std::string& to) {
     const std::size_t at = t.find(from);
     REQUIRE(at != std::string::npos);

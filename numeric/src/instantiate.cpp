@@ -8,4 +8,6 @@ template Analysis<InstantiatedScalar> analyze(const Scene<InstantiatedScalar>&,
                                               const std::vector<Strategy<InstantiatedScalar>>&, Engine);
 template LeanSolution<InstantiatedScalar> solve_lean(const Scene<InstantiatedScalar>&, const Strategy<InstantiatedScalar>&,
                                                      Want, Engine);
+template LeanSolution<InstantiatedScalar> solve_lean(const RawCollision<InstantiatedScalar>&,
+                                                     const Strategy<InstantiatedScalar>&, Want, Engine);
 }  // namespace impact3d

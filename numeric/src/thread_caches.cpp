@@ -3,6 +3,8 @@
 #if IMPACT3D_MULTIPRECISION
 #include <flint/flint.h>
 #include <mpfr.h>
+
+#include "impact3d/numeric/multiprecision.hpp"
 #endif
 
 namespace impact3d {
@@ -11,6 +13,13 @@ void free_thread_caches() {
 #if IMPACT3D_MULTIPRECISION
   mpfr_free_cache2(MPFR_FREE_LOCAL_CACHE);
   flint_cleanup();
+#endif
+}
+
+void fill_shared_before_threads() {
+#if IMPACT3D_MULTIPRECISION
+  mp::fill_limits<mp::float50>();
+  mp::fill_limits<mp::float100>();
 #endif
 }
 

@@ -445,6 +445,7 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
       failed = true;
     }
   };
+  fill_shared_before_threads();
   {
     std::vector<std::jthread> threads;
     const auto work_in_thread = [&](Worker& w) {
@@ -508,6 +509,7 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
       if (!error) error = std::current_exception();
     }
   };
+  fill_shared_before_threads();
   {
     std::vector<std::jthread> threads;
     for (unsigned j = 1; j < jobs; ++j)

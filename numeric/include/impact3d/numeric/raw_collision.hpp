@@ -66,6 +66,23 @@ Scene<Scalar> compute_scene(const RawCollision<Scalar>& c) {
   return s;
 }
 
+// The raw parameters in the scalar's lean twin (lean_twin.hpp), exactly.
+template <typename Scalar>
+RawCollision<lean_twin_t<Scalar>> twin_of(const RawCollision<Scalar>& c) {
+  using Twin = LeanTwin<Scalar>;
+  using T = typename Twin::type;
+  const auto to = [](const Scalar& x) { return Twin::to(x); };
+  RawCollision<T> twin;
+  for (int i = 0; i < 2; ++i) {
+    const RawVehicle<Scalar>& v = c.vehicle[i];
+    twin.vehicle[i] = {to(v.mass), convert_each<T>(v.J_B, to), to(v.yaw_deg), to(v.pitch_deg), to(v.roll_deg),
+                       convert_each<T>(v.v_W, to), convert_each<T>(v.w_B, to), convert_each<T>(v.p_CgIc_B, to)};
+  }
+  twin.normal_yaw_deg = to(c.normal_yaw_deg), twin.normal_pitch_deg = to(c.normal_pitch_deg);
+  twin.tangent_roll_deg = to(c.tangent_roll_deg), twin.restitution = to(c.restitution);
+  return twin;
+}
+
 // The scene of the raw parameters, rotations in closed form (rotation_zyx). In double the nine sines and
 // cosines are taken together on SIMD lanes (batch/sin_cos.hpp, within 4 ulps of sin_cos_deg): one case's
 // angles to rotations, the largest cost of a lean solve from raw parameters, in a few vector operations.
@@ -74,17 +91,7 @@ template <typename Scalar>
 Scene<Scalar> scene_of(const RawCollision<Scalar>& c) {
   if constexpr (has_lean_twin_v<Scalar>) {
     using Twin = LeanTwin<Scalar>;
-    using T = typename Twin::type;
-    const auto to = [](const Scalar& x) { return Twin::to(x); };
-    RawCollision<T> twin;
-    for (int i = 0; i < 2; ++i) {
-      const RawVehicle<Scalar>& v = c.vehicle[i];
-      twin.vehicle[i] = {to(v.mass), convert_each<T>(v.J_B, to), to(v.yaw_deg), to(v.pitch_deg), to(v.roll_deg),
-                         convert_each<T>(v.v_W, to), convert_each<T>(v.w_B, to), convert_each<T>(v.p_CgIc_B, to)};
-    }
-    twin.normal_yaw_deg = to(c.normal_yaw_deg), twin.normal_pitch_deg = to(c.normal_pitch_deg);
-    twin.tangent_roll_deg = to(c.tangent_roll_deg), twin.restitution = to(c.restitution);
-    return convert_scene<Scalar>(compute_scene(twin), [](const T& x) { return Twin::from(x); });
+    return convert_scene<Scalar>(compute_scene(twin_of(c)), [](const typename Twin::type& x) { return Twin::from(x); });
   } else {
     return compute_scene(c);
   }

@@ -8,6 +8,12 @@ namespace impact3d {
 // This thread's caches freed (nothing without multiprecision); they are rebuilt if it computes again.
 void free_thread_caches();
 
+// What the multiprecision numbers fill on first use and share between threads (std::numeric_limits,
+// see multiprecision.hpp) filled now. Called by a thread about to start others, so that the guarantee
+// does not rest on the compiler running multiprecision.hpp's start-up fill before main, which the
+// standard lets it defer.
+void fill_shared_before_threads();
+
 struct ThreadCaches {
   ThreadCaches() = default;
   ThreadCaches(const ThreadCaches&) = delete;
