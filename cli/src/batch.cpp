@@ -393,10 +393,10 @@ int batch(const BatchOptions& o) {
       into.push_back(std::move(row));
     }
   };
+  fill_shared_before_threads();  // before the first thread starts (thread_caches.hpp)
   // Declared after everything their tasks read, so that leaving early finishes the tasks first; the
   // writer made at once, the solvers as blocks first need them, all with the signals left to this
   // thread.
-  fill_shared_before_threads();
   const std::unique_ptr<HelperThread> writer_thread = [] {
     const SignalsToMain mask;
     return std::make_unique<HelperThread>();

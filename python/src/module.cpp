@@ -6,6 +6,7 @@
 #include "impact3d/io/montecarlo.hpp"
 #include "impact3d/io/render.hpp"
 #include "impact3d/numeric/lean.hpp"
+#include "impact3d/numeric/thread_caches.hpp"
 #include "solve.hpp"
 #include "solve_batch.hpp"
 #include "reconstruct.hpp"
@@ -17,6 +18,8 @@ using namespace impact3d::python;
 
 PYBIND11_MODULE(_impact3d, m) {
   m.doc() = "impact3d's C++ library; use the package impact3d";
+  // Its functions release the GIL, so Python threads may solve at 50 or 100 digits at once.
+  impact3d::fill_shared_before_threads();
   py::register_exception<InputError>(m, "CaseError", PyExc_ValueError);
 
   py::class_<Case>(m, "Case")

@@ -165,7 +165,7 @@ LeanSolution<Scalar> solve_lean(const Scene<Scalar>& s, const Strategy<Scalar>& 
 
 // From raw parameters: solve_lean(scene_of(c), ...), the same solution. A scalar with a lean twin goes
 // from the raw parameters to the solution in the twin, its scene not converted to the scalar and back
-// (at 100 digits that was a tenth of the time).
+// (at 100 digits that was about 5 % of the instructions, BENCHMARKS.md).
 template <typename Scalar>
 LeanSolution<Scalar> solve_lean(const RawCollision<Scalar>& c, const Strategy<Scalar>& st, Want want = Want::impulse,
                                 Engine engine = Engine::generated) {
