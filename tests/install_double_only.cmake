@@ -9,7 +9,9 @@ execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -
 if(rc)
   message(FATAL_ERROR "configuring the double-only library failed")
 endif()
-foreach(step "--build;${WORK_DIR}/build" "--install;${WORK_DIR}/build;--prefix;${WORK_DIR}/prefix")
+# On every core: the rest of the suite is done long before this build is (ctest starts it first).
+cmake_host_system_information(RESULT jobs QUERY NUMBER_OF_LOGICAL_CORES)
+foreach(step "--build;${WORK_DIR}/build;--parallel;${jobs}" "--install;${WORK_DIR}/build;--prefix;${WORK_DIR}/prefix")
   execute_process(COMMAND ${CMAKE_COMMAND} ${step} RESULT_VARIABLE rc OUTPUT_QUIET)
   if(rc)
     message(FATAL_ERROR "cmake ${step} failed for the double-only library")
