@@ -509,7 +509,6 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
       if (!error) error = std::current_exception();
     }
   };
-  fill_shared_before_threads();
   {
     std::vector<std::jthread> threads;
     for (unsigned j = 1; j < jobs; ++j)
