@@ -1,4 +1,4 @@
-// FixedFloat's own +, - and x against MPFR's calls at the same precision, bit for bit: sign, kind,
+// FixedFloat's own +, -, x and quotient by an integer against MPFR's calls at the same precision, bit for bit: sign, kind,
 // exponent and every limb; its other functions against Boost's MPFR numbers (float100), which it stands
 // in for on the lean route; and that route's scene from raw parameters against the same computed in
 // Boost's numbers. (check_lean holds the lean solve at 100 digits, computed in FixedFloat, to analyze's
@@ -157,13 +157,16 @@ TEST_CASE("FixedFloat's special values and the edges of the fast range are MPFR'
   CHECK(checked == 4 * 14 * 14);
 }
 
-// The quotient by an integer below 2^32 takes MPFR's division by a machine integer: held here to
-// mpfr_div on the integers that path takes, those just beyond it (2^32, a half-integer), and numerators
-// of every kind, down to where the quotient underflows. (Whether the path is taken only speed shows.)
+// The quotient by an integer below 2^32 is FixedFloat's own long division by a precomputed inverse
+// (MPFR's division by a machine integer where the result leaves the fast range): held here to mpfr_div
+// on the integers that path takes, those just beyond it (2^32, a half-integer), numerators of every kind,
+// down to where the quotient underflows, and exact multiples. (Whether the path is taken only speed shows.)
 TEST_CASE("FixedFloat divided by an integer is MPFR's quotient, bit for bit", "[fixed_float]") {
   Draw d;
-  std::vector<double> divisors{1, -1, 2, 3, -3, 4, -4, 7, 90, -90, 180, -180, 360, 2147483648.0, 4294967295.0,
-                               -4294967295.0, 4294967296.0, 4294967297.0, 90.5, 0.5};
+  // 2^31 + 1: its limb d = 2^63 + 2^32 lies far from its reciprocal's 2^128 / d, so the long division's
+  // second correction (the estimate two short) is taken there.
+  std::vector<double> divisors{1, -1, 2, 3, -3, 4, -4, 7, 90, -90, 180, -180, 360, 2147483648.0, 2147483649.0,
+                               4294967295.0, -4294967295.0, 4294967296.0, 4294967297.0, 90.5, 0.5};
   for (int k = 0; k < 40; ++k) divisors.push_back(static_cast<double>(1 + d.g() % 4294967295ULL) * (k % 2 ? -1 : 1));
   std::vector<Mpfr> numerators(200);
   for (std::size_t k = 0; k < numerators.size(); ++k) {
@@ -178,7 +181,7 @@ TEST_CASE("FixedFloat divided by an integer is MPFR's quotient, bit for bit", "[
   mpfr_set_ui_2exp(numerators[5].x, 3, mpfr_get_emin() - 1, MPFR_RNDN);
   mpfr_set_ui_2exp(numerators[7].x, 7, mpfr_get_emin() + 1, MPFR_RNDN);
   mpfr_set_inf(numerators[6].x, 1), mpfr_nextbelow(numerators[6].x);  // the largest
-  Mpfr n, want;
+  Mpfr n, want, exact;
   int checked = 0;
   for (const double v : divisors) {
     mpfr_set_d(n.x, v, MPFR_RNDN);
@@ -189,8 +192,49 @@ TEST_CASE("FixedFloat divided by an integer is MPFR's quotient, bit for bit", "[
       REQUIRE(same(F::of(a.x) / b, want.x));
       ++checked;
     }
+    // Multiples of the divisor: the quotient exact.
+    for (int k = 0; k < 20; ++k) {
+      d.significand(want.x);
+      mpfr_prec_round(want.x, kP - 33, MPFR_RNDZ);
+      mpfr_prec_round(want.x, kP, MPFR_RNDN);
+      mpfr_mul_2si(want.x, want.x, static_cast<long>(d.g() % 41) - 20, MPFR_RNDN);
+      REQUIRE(mpfr_mul(exact.x, want.x, n.x, MPFR_RNDN) == 0);  // a multiple in kP bits, exactly
+      INFO("a = " << mpfr_get_d(exact.x, MPFR_RNDN) << ", b = " << v);
+      REQUIRE(same(F::of(exact.x) / b, want.x));
+      ++checked;
+    }
   }
-  CHECK(checked == 60 * 200);
+  CHECK(checked == 61 * (200 + 20));
+}
+
+// Sums whose exponents lie less than 64 apart are added in one carry chain and shifted by counts; the
+// cases there that drawn pairs seldom reach, each held to MPFR (with the other operations on the pair):
+// the guard limb deciding the rounding, a sum rounding up to the next power of two, and a difference
+// shifted one place left that ties and rounds to a power of two.
+TEST_CASE("FixedFloat's sums of nearby exponents at their rounding edges are MPFR's", "[fixed_float]") {
+  Mpfr x, y;
+  int checked = 0;
+  for (long d = 48; d <= 63; ++d)
+    for (unsigned long m : {1UL, 2UL, 3UL, 5UL, 7UL}) {
+      mpfr_set_ui(x.x, 1, MPFR_RNDN), mpfr_mul_2si(x.x, x.x, kP, MPFR_RNDN), mpfr_sub_ui(x.x, x.x, m, MPFR_RNDN);
+      mpfr_div_2si(x.x, x.x, kP, MPFR_RNDN);  // 1 - m 2^-kP
+      mpfr_set_ui_2exp(y.x, 1, kP - 1, MPFR_RNDN), mpfr_add_ui(y.x, y.x, 1, MPFR_RNDN);
+      mpfr_div_2si(y.x, y.x, kP + d, MPFR_RNDN);  // (1/2 + 2^-kP) 2^-d, its last bit below x's last place
+      checked += agree_all(x.x, y.x) + agree_all(y.x, x.x);
+    }
+  // 1/2 + (1 - 2^-kP) / 2 = 1 - 2^-(kP + 1): a tie, to even, 1.
+  mpfr_set_ui_2exp(x.x, 1, -1, MPFR_RNDN);
+  mpfr_set_ui(y.x, 1, MPFR_RNDN), mpfr_nextbelow(y.x), mpfr_div_2ui(y.x, y.x, 1, MPFR_RNDN);
+  checked += agree_all(x.x, y.x);
+  // 5/8 - (1/8 + 2^-(kP + 2)) = 1/2 - 2^-(kP + 2): shifted one place left, a tie, to even, 1/2.
+  mpfr_set_ui_2exp(x.x, 5, -3, MPFR_RNDN);
+  mpfr_set_ui_2exp(y.x, 1, -3, MPFR_RNDN), mpfr_nextabove(y.x);
+  REQUIRE(mpfr_cmp_ui_2exp(y.x, 1, -3) > 0);
+  checked += agree_all(x.x, y.x);
+  Mpfr want;
+  mpfr_sub(want.x, x.x, y.x, MPFR_RNDN);
+  CHECK(mpfr_cmp_ui_2exp(want.x, 1, -1) == 0);  // the case meant: it rounds to 1/2
+  CHECK(checked == 4 * (16 * 5 * 2 + 2));
 }
 
 TEST_CASE("FixedFloat's conversions from integers and doubles are exact", "[fixed_float]") {

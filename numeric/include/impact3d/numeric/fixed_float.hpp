@@ -4,13 +4,22 @@
 // call costs about as much in bookkeeping as in arithmetic (each operand's precision, thread-local flags
 // and exponent range, a generic rounding), and Boost's number adds a zeroing constructor to every
 // temporary (BENCHMARKS.md); here a product is GMP's exact 2P-bit product (mpn_mul_n) rounded once, a
-// sum the exact sum rounded once: the definition MPFR implements. check_fixed_float holds every
+// sum the exact sum rounded once, a quotient by an integer below 2^32 the exact quotient rounded once:
+// the definition MPFR implements. check_fixed_float holds every
 // operation to MPFR's, and check_lean the lean route computed in it to analyze's in Boost's numbers.
 //
 // Layout as MPFR's: a regular value is 0.m x 2^e with the top bit of m set, the bits below P zero.
 // Exponents stay within the fast range below, far inside MPFR's default [1 - 2^30, 2^30 - 1], which
 // impact3d keeps; a result that would leave it, and every operation on an infinity or a NaN, is MPFR's
 // call (which then overflows or underflows exactly as MPFR does).
+//
+// Written for the processor as much as for the reader (BENCHMARKS.md measures each step): the loops over
+// limbs in x, +, -, the quotient and the rounding are unrolled (#pragma GCC unroll, which clang reads
+// too), since at -O3 GCC otherwise vectorizes these short loops, moving limbs through the stack, where a
+// limb stored alone and read back in a wider load stalls until the store completes; and in a product,
+// in a sum of exponents less than 64 apart and in the rounding, the carry into a new place and the
+// round-up are shifts and adds by 0 or 1 rather than branches, which random operands would mispredict
+// half the time.
 #pragma once
 
 #include <mpfr.h>
@@ -144,19 +153,20 @@ class FixedFloat {
       // GMP stored the product limb by limb: read it so, not in wider vector loads that would wait on
       // those stores (each limb through a register).
       Limb p[2 * kLimbs];
+      #pragma GCC unroll 16
       for (int k = 0; k < 2 * kLimbs; ++k) p[k] = in_register(w[k]);
-      std::int64_t e = a.e_ + b.e_;
-      bool sticky = false;
-      if (p[2 * kLimbs - 1] >> 63) {
-        for (int k = 0; k < kLimbs; ++k) out.m_[k] = p[kLimbs + k];
-        for (int i = 0; i < kLimbs; ++i) sticky = sticky || p[i] != 0;
-      } else {  // the product lies in [1/4, 1/2): one place more
-        for (int k = 0; k < kLimbs; ++k) out.m_[k] = (p[kLimbs + k] << 1) | (p[kLimbs + k - 1] >> 63);
-        sticky = (p[kLimbs - 1] << 1) != 0;
-        for (int i = 0; i < kLimbs - 1; ++i) sticky = sticky || p[i] != 0;
-        --e;
-      }
-      if (!out.round(sticky, e, a.neg_ != b.neg_)) call_into(out, mpfr_mul, a, b);
+      // The product lies in [1/2, 1) (top bit set: t = 1) or in [1/4, 1/2) (t = 0: one place more).
+      // Selected by shifts, not a branch: random operands would mispredict it half the time.
+      const Limb t = p[2 * kLimbs - 1] >> 63;
+      const unsigned sh = static_cast<unsigned>(1 - t);
+      Limb r[kLimbs];
+      #pragma GCC unroll 16
+      for (int k = 0; k < kLimbs; ++k) r[k] = (p[kLimbs + k] << sh) | ((p[kLimbs + k - 1] >> 63) >> t);
+      Limb below = p[kLimbs - 1] << sh;
+      #pragma GCC unroll 16
+      for (int i = 0; i < kLimbs - 1; ++i) below |= p[i];
+      if (!round_into(out, r, below != 0, a.e_ + b.e_ - static_cast<std::int64_t>(sh), a.neg_ != b.neg_))
+        call_into(out, mpfr_mul, a, b);
     } else if ((a.kind_ == kZero && b.kind_ <= kRegular) || (b.kind_ == kZero && a.kind_ <= kRegular)) {
       out.neg_ = a.neg_ != b.neg_;
     } else {
@@ -193,16 +203,25 @@ class FixedFloat {
   friend FixedFloat operator-(FixedFloat&& a, V b) {
     return add(a, FixedFloat(b), true);
   }
-  // By an integer divisor below 2^32 (the 90 and 180 of every angle's reduction): MPFR's division by a
-  // machine integer, correctly rounded as mpfr_div is, so the same number, in a fraction of the time.
+  // By an integer divisor below 2^32 (the 90 and 180 of every angle's reduction): the exact quotient
+  // rounded once (quotient_by_limb), so mpfr_div's number, in a fraction of the time; a zero numerator,
+  // or a quotient leaving the fast range, MPFR's division by a machine integer. Every path writes the
+  // one result object, as operator* does.
   friend FixedFloat operator/(const FixedFloat& a, const FixedFloat& b) {
+    FixedFloat out;
     if (a.kind_ <= kRegular && b.kind_ == kRegular && b.e_ >= 1 && b.e_ <= 32 && (b.m_[kLimbs - 1] << b.e_) == 0 &&
         b.low_limbs_zero()) {
+      if (a.kind_ == kRegular && quotient_by_limb(out, a, b.m_[kLimbs - 1], static_cast<int>(b.e_), a.neg_ != b.neg_)) return out;
       const unsigned long u = b.m_[kLimbs - 1] >> (64 - b.e_);
-      const FixedFloat q = call([u](mpfr_ptr r, mpfr_srcptr x, mpfr_rnd_t rnd) { return mpfr_div_ui(r, x, u, rnd); }, a);
-      return b.neg_ ? -q : q;
+      View v(out);
+      const View va(a);
+      mpfr_div_ui(v.x, va.x, u, MPFR_RNDN);
+      out.take(v);
+      if (b.neg_) out.neg_ = !out.neg_;
+      return out;
     }
-    return call(mpfr_div, a, b);
+    call_into(out, mpfr_div, a, b);
+    return out;
   }
   FixedFloat& operator+=(const FixedFloat& b) { return *this = *this + b; }
   FixedFloat& operator-=(const FixedFloat& b) { return *this = *this - b; }
@@ -286,28 +305,70 @@ class FixedFloat {
     return x;
   }
 
-  // This number as the exact value (0.m + below) x 2^e rounded to nearest, ties to even: m_ holds the
-  // kLimbs limbs from the leading one, `sticky` whether anything nonzero lies below them. False where the
+  // The exact value (0.r + below) x 2^e rounded to nearest, ties to even, written into `out`: r holds the
+  // kLimbs limbs from the leading one, `sticky` whether anything nonzero lies below them. The limbs stay
+  // in registers and are stored once (a number written limb by limb and read back in wider loads
+  // stalls), and the round-up is added through every limb rather than branched on. False where the
   // result leaves the fast exponent range (MPFR's call then decides it).
-  bool round(bool sticky, std::int64_t e, bool neg) {
+  static bool round_into(FixedFloat& out, Limb (&r)[kLimbs], bool sticky, std::int64_t e, bool neg) {
     constexpr Limb half = Limb{1} << (kSpare - 1), below = half - 1;
-    sticky = sticky || (m_[0] & below) != 0;
-    const bool up = (m_[0] & half) != 0 && (sticky || ((m_[0] >> kSpare) & 1));
-    m_[0] &= ~((half << 1) - 1);
-    if (up) {
-      Limb carry = Limb{1} << kSpare;
-      for (int i = 0; i < kLimbs && carry; ++i) {
-        m_[i] += carry;
-        carry = m_[i] < carry;
-      }
-      if (carry) {  // 0.111...1 rounded up to 1: 0.1 x 2^(e + 1)
-        m_[kLimbs - 1] = Limb{1} << 63;
-        ++e;
-      }
+    const Limb up = ((r[0] & half) != 0) & (sticky | ((r[0] & below) != 0) | ((r[0] >> kSpare) & 1));
+    r[0] &= ~((half << 1) - 1);
+    Limb carry = up << kSpare;
+    #pragma GCC unroll 16
+    for (int i = 0; i < kLimbs; ++i) {
+      r[i] += carry;
+      carry = r[i] < carry;
+    }
+    if (carry) {  // 0.111...1 rounded up to 1 (every limb now 0): 0.1 x 2^(e + 1)
+      r[kLimbs - 1] = Limb{1} << 63;
+      ++e;
     }
     if (e > kFastExponent || e < -kFastExponent) return false;
-    kind_ = kRegular, e_ = e, neg_ = neg;
+    #pragma GCC unroll 16
+    for (int i = 0; i < kLimbs; ++i) out.m_[i] = in_register(r[i]);
+    out.kind_ = kRegular, out.e_ = e, out.neg_ = neg;
     return true;
+  }
+
+  // a / u, a regular, u an integer of k bits, 1 <= k <= 32, whose limb shifted to the top is d: the exact
+  // quotient of a's limbs with a zero limb below them, taken limb by limb with d's precomputed inverse
+  // (Moeller and Granlund, "Improved division by invariant integers", 2011, algorithm 4; dividend and
+  // divisor shifted alike, which leaves the quotient), rounded with the remainder in the sticky bit.
+  // The quotient has at least 64 (kLimbs + 1) - 33 bits, more than P + 1, so the round bit lies in it,
+  // and below it the sticky bit: the quotient's lower bits and the remainder. (Where kSpare > 33, as at
+  // 334 bits, the lower bits decide it alone: a quotient by u lies at least 1/(2u) of a last place from
+  // a tie, or on it exactly when the remainder is zero, and a tie cannot be: its P + 1 bits times u
+  // would not fit in P.)
+  [[gnu::noinline]] static bool quotient_by_limb(FixedFloat& out, const FixedFloat& a, Limb d, int k, bool neg) {
+    using Wide = unsigned __int128;
+    const Limb v = static_cast<Limb>(((static_cast<Wide>(~d) << 64) | ~Limb{0}) / d);
+    constexpr int n = kLimbs + 2;
+    const int sh = 64 - k;
+    Limb num[n];  // the limbs, a zero limb, shifted left by sh: num[n - 1] < d
+    num[0] = 0;
+    num[1] = a.m_[0] << sh;
+    #pragma GCC unroll 16
+    for (int j = 2; j < n - 1; ++j) num[j] = (a.m_[j - 1] << sh) | (a.m_[j - 2] >> k);
+    num[n - 1] = a.m_[kLimbs - 1] >> k;
+    Limb q[n - 1], rem = num[n - 1];
+    #pragma GCC unroll 16
+    for (int j = n - 2; j >= 0; --j) {
+      const Wide t = static_cast<Wide>(v) * rem + ((static_cast<Wide>(rem) << 64) | num[j]);
+      Limb q1 = static_cast<Limb>(t >> 64) + 1;
+      const Limb q0 = static_cast<Limb>(t);
+      Limb r = num[j] - q1 * d;
+      const Limb over = Limb{0} - static_cast<Limb>(r > q0);  // the estimate one too large
+      q1 += over, r += over & d;
+      if (r >= d) ++q1, r -= d;  // rare
+      q[j] = q1, rem = r;
+    }
+    const int c = std::countl_zero(q[n - 2]);  // q[n - 2] holds the quotient's top bits: not zero
+    Limb r[kLimbs];
+    #pragma GCC unroll 16
+    for (int i = 0; i < kLimbs; ++i) r[i] = (q[i + 1] << c) | ((q[i] >> 1) >> (63 - c));
+    const bool sticky = (q[0] << c) != 0 || rem != 0;
+    return round_into(out, r, sticky, a.e_ - c, neg);
   }
 
   // a + b, or a - b when `subtract`, written into the one result object as operator* does.
@@ -315,9 +376,9 @@ class FixedFloat {
     FixedFloat out;
     const bool nb = b.neg_ != subtract;
     if (a.kind_ == kRegular && b.kind_ == kRegular) {
-      const bool b_larger = compare_magnitude(a, b) < 0;
-      const FixedFloat& x = b_larger ? b : a;  // |x| >= |y|
-      const FixedFloat& y = b_larger ? a : b;
+      const bool b_larger = a.e_ != b.e_ ? a.e_ < b.e_ : compare_magnitude(a, b) < 0;
+      const FixedFloat& x = *(b_larger ? &b : &a);  // |x| >= |y|
+      const FixedFloat& y = *(b_larger ? &a : &b);
       const bool nx = b_larger ? nb : a.neg_, ny = b_larger ? a.neg_ : nb;
       const std::int64_t d = x.e_ - y.e_;
       if (d > P + 1) {
@@ -344,6 +405,49 @@ class FixedFloat {
 
   // x + y (or x - y when `differ`), |x| >= |y| both regular, d = e_x - e_y <= P + 1, with x's sign `nx`.
   static bool sum_into(FixedFloat& out, const FixedFloat& x, const FixedFloat& y, std::int64_t d, bool nx, bool differ) {
+    return d < 64 ? sum_near(out, x, y, static_cast<unsigned>(d), nx, differ) : sum_far(out, x, y, d, nx, differ);
+  }
+
+  // sum_into where d < 64, as nearly every sum of a kernel is: y shifted by d within x's limbs and a guard
+  // limb below them, nothing below that. Added, or subtracted as x + ~y + 1, in one carry chain, and
+  // the result shifted one place right (a sum in [1, 2)) or left (a difference in [1/4, 1/2)) by shift
+  // counts rather than branches: random signs and magnitudes would mispredict them. A difference that
+  // cancelled further (d <= 1) is sum_far's.
+  static bool sum_near(FixedFloat& out, const FixedFloat& x, const FixedFloat& y, unsigned d, bool nx, bool differ) {
+    using Wide = unsigned __int128;
+    constexpr int n = kLimbs + 1;
+    Limb v[n];
+    v[0] = (y.m_[0] << 1) << (63 - d);
+    #pragma GCC unroll 16
+    for (int j = 1; j < kLimbs; ++j) v[j] = (y.m_[j - 1] >> d) | ((y.m_[j] << 1) << (63 - d));
+    v[n - 1] = y.m_[kLimbs - 1] >> d;
+    const Limb flip = Limb{0} - static_cast<Limb>(differ);
+    Limb sum[n], carry = static_cast<Limb>(differ);
+    #pragma GCC unroll 16
+    for (int j = 0; j < n; ++j) {
+      const Wide t = static_cast<Wide>(j == 0 ? Limb{0} : x.m_[j - 1]) + (v[j] ^ flip) + carry;
+      sum[j] = static_cast<Limb>(t), carry = static_cast<Limb>(t >> 64);
+    }
+    // A difference always carries out. Shifted right, nothing is lost: y's bits below its last place
+    // are zero, so the guard limb's lowest bit is.
+    const Limb right = carry & static_cast<Limb>(!differ);
+    #pragma GCC unroll 16
+    for (int j = 0; j < n - 1; ++j) sum[j] = (sum[j] >> right) | ((sum[j + 1] << 1) << (63 - right));
+    sum[n - 1] = (sum[n - 1] >> right) | (right << 63);
+    if ((sum[n - 1] >> 62) == 0) return sum_far(out, x, y, d, nx, differ);
+    const Limb left = 1 - (sum[n - 1] >> 63);
+    #pragma GCC unroll 16
+    for (int j = n - 1; j > 0; --j) sum[j] = (sum[j] << left) | ((sum[j - 1] >> 1) >> (63 - left));
+    sum[0] <<= left;
+    Limb r[kLimbs];
+    #pragma GCC unroll 16
+    for (int k = 0; k < kLimbs; ++k) r[k] = sum[k + 1];
+    return round_into(out, r, sum[0] != 0, x.e_ + static_cast<std::int64_t>(right) - static_cast<std::int64_t>(left), nx);
+  }
+
+  // sum_into for any d: y shifted by whole limbs and bits, and whatever fell below the guard limb kept
+  // as a sticky bit.
+  static bool sum_far(FixedFloat& out, const FixedFloat& x, const FixedFloat& y, std::int64_t d, bool nx, bool differ) {
     // In kLimbs + 1 limbs, x's and a guard limb below them: y shifted right by d, and whether any of
     // its bits fell below the guard limb (y holds at most kLimbs limbs, so d < 64 makes none fall).
     using Wide = unsigned __int128;
@@ -352,6 +456,7 @@ class FixedFloat {
     const int q = static_cast<int>(d / 64), s = static_cast<int>(d % 64);
     // y's limb i sits in limb i + 1 before the shift; source(k) is that layout's limb k.
     auto source = [&](int k) { return k >= 1 && k <= kLimbs ? y.m_[k - 1] : Limb{0}; };
+    #pragma GCC unroll 16
     for (int j = 0; j < n; ++j) yd[j] = (source(j + q) >> s) | ((source(j + q + 1) << 1) << (63 - s));
     bool sticky = ((source(q) << 1) << (63 - s)) != 0;  // the low s bits of limb q
     for (int k = 1; k < q && !sticky; ++k) sticky = source(k) != 0;
@@ -359,12 +464,14 @@ class FixedFloat {
     if (!differ) {
       Limb carry = 0;
       sum[0] = yd[0];
+      #pragma GCC unroll 16
       for (int j = 1; j < n; ++j) {
         const Wide t = static_cast<Wide>(x.m_[j - 1]) + yd[j] + carry;
         sum[j] = static_cast<Limb>(t), carry = static_cast<Limb>(t >> 64);
       }
       if (carry) {  // in [1, 2): one place right, the bit shifted out of the guard limb into the sticky
         sticky = sticky || (sum[0] & 1);
+        #pragma GCC unroll 16
         for (int j = 0; j < n - 1; ++j) sum[j] = (sum[j] >> 1) | (sum[j + 1] << 63);
         sum[n - 1] = (sum[n - 1] >> 1) | (Limb{1} << 63);
         ++e;
@@ -373,6 +480,7 @@ class FixedFloat {
       // x - y exactly is the difference of the n limbs less a fraction of the guard limb's last place
       // when bits fell below it: the difference less one whole place, plus a fraction in (0, 1).
       Limb borrow = sticky ? 1 : 0;
+      #pragma GCC unroll 16
       for (int j = 0; j < n; ++j) {
         const Wide t = static_cast<Wide>(j == 0 ? Limb{0} : x.m_[j - 1]) - yd[j] - borrow;
         sum[j] = static_cast<Limb>(t), borrow = static_cast<Limb>(t >> 64) & 1;
@@ -389,14 +497,17 @@ class FixedFloat {
       const int c = std::countl_zero(sum[top]);
       const int shift = 64 * (n - 1 - top) + c;
       const int lq = shift / 64, ls = shift % 64;
+      #pragma GCC unroll 16
       for (int j = n - 1; j >= 0; --j) {
         const Limb hi = j - lq >= 0 ? sum[j - lq] : 0, lo = j - lq - 1 >= 0 ? sum[j - lq - 1] : 0;
         sum[j] = (hi << ls) | ((lo >> 1) >> (63 - ls));
       }
       e -= shift;
     }
-    for (int k = 0; k < kLimbs; ++k) out.m_[k] = sum[k + 1];
-    return out.round(sticky || sum[0] != 0, e, nx);
+    Limb r[kLimbs];
+    #pragma GCC unroll 16
+    for (int k = 0; k < kLimbs; ++k) r[k] = sum[k + 1];
+    return round_into(out, r, sticky || sum[0] != 0, e, nx);
   }
 };
 
