@@ -160,8 +160,7 @@ class FixedFloat {
       const Limb t = p[2 * kLimbs - 1] >> 63;
       const unsigned sh = static_cast<unsigned>(1 - t);
       Limb r[kLimbs];
-      #pragma GCC unroll 16
-      for (int k = 0; k < kLimbs; ++k) r[k] = (p[kLimbs + k] << sh) | ((p[kLimbs + k - 1] >> 63) >> t);
+      shifted_left(r, p + kLimbs - 1, sh);
       Limb below = p[kLimbs - 1] << sh;
       #pragma GCC unroll 16
       for (int i = 0; i < kLimbs - 1; ++i) below |= p[i];
@@ -305,6 +304,13 @@ class FixedFloat {
     return x;
   }
 
+  // r = limbs src[1 .. kLimbs] shifted left by c places, 0 <= c < 64, src[0]'s top c bits coming in:
+  // how a product, a quotient and a difference bring their leading one to the top.
+  static void shifted_left(Limb (&r)[kLimbs], const Limb* src, unsigned c) {
+    #pragma GCC unroll 16
+    for (int i = 0; i < kLimbs; ++i) r[i] = (src[i + 1] << c) | ((src[i] >> 1) >> (63 - c));
+  }
+
   // The exact value (0.r + below) x 2^e rounded to nearest, ties to even, written into `out`: r holds the
   // kLimbs limbs from the leading one, `sticky` whether anything nonzero lies below them. The limbs stay
   // in registers and are stored once (a number written limb by limb and read back in wider loads
@@ -365,8 +371,7 @@ class FixedFloat {
     }
     const int c = std::countl_zero(q[n - 2]);  // q[n - 2] holds the quotient's top bits: not zero
     Limb r[kLimbs];
-    #pragma GCC unroll 16
-    for (int i = 0; i < kLimbs; ++i) r[i] = (q[i + 1] << c) | ((q[i] >> 1) >> (63 - c));
+    shifted_left(r, q, static_cast<unsigned>(c));
     const bool sticky = (q[0] << c) != 0 || rem != 0;
     return round_into(out, r, sticky, a.e_ - c, neg);
   }
@@ -376,9 +381,9 @@ class FixedFloat {
     FixedFloat out;
     const bool nb = b.neg_ != subtract;
     if (a.kind_ == kRegular && b.kind_ == kRegular) {
-      const bool b_larger = a.e_ != b.e_ ? a.e_ < b.e_ : compare_magnitude(a, b) < 0;
-      const FixedFloat& x = *(b_larger ? &b : &a);  // |x| >= |y|
-      const FixedFloat& y = *(b_larger ? &a : &b);
+      const bool b_larger = compare_magnitude(a, b) < 0;
+      const FixedFloat& x = b_larger ? b : a;  // |x| >= |y|
+      const FixedFloat& y = b_larger ? a : b;
       const bool nx = b_larger ? nb : a.neg_, ny = b_larger ? a.neg_ : nb;
       const std::int64_t d = x.e_ - y.e_;
       if (d > P + 1) {
@@ -436,13 +441,9 @@ class FixedFloat {
     sum[n - 1] = (sum[n - 1] >> right) | (right << 63);
     if ((sum[n - 1] >> 62) == 0) return sum_far(out, x, y, d, nx, differ);
     const Limb left = 1 - (sum[n - 1] >> 63);
-    #pragma GCC unroll 16
-    for (int j = n - 1; j > 0; --j) sum[j] = (sum[j] << left) | ((sum[j - 1] >> 1) >> (63 - left));
-    sum[0] <<= left;
     Limb r[kLimbs];
-    #pragma GCC unroll 16
-    for (int k = 0; k < kLimbs; ++k) r[k] = sum[k + 1];
-    return round_into(out, r, sum[0] != 0, x.e_ + static_cast<std::int64_t>(right) - static_cast<std::int64_t>(left), nx);
+    shifted_left(r, sum, static_cast<unsigned>(left));
+    return round_into(out, r, (sum[0] << left) != 0, x.e_ + static_cast<std::int64_t>(right) - static_cast<std::int64_t>(left), nx);
   }
 
   // sum_into for any d: y shifted by whole limbs and bits, and whatever fell below the guard limb kept
