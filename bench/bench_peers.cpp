@@ -8,10 +8,12 @@
 #include <benchmark/benchmark.h>
 
 #include <optional>
+#include <random>
 #include <vector>
 
 #include "impact3d/numeric/analysis.hpp"
 #include "impact3d/numeric/batch/columns.hpp"
+#include "impact3d/numeric/limb_product.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 #include "peer_collisions.hpp"
 
@@ -89,6 +91,31 @@ void scene_of_100(benchmark::State& state) {
   for (auto _ : state)
     for (const auto& r : raw) benchmark::DoNotOptimize(scene_of(r));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
+}
+
+// The exact product of two 6-limb significands, which a 100-digit collision takes about 480 times:
+// limb_product.hpp's assembly (argument 0; FixedFloat's where the processor has mulx and adx) beside
+// GMP's mpn_mul_n (1), on the same 1024 drawn pairs.
+void pc_crash_100_digits_product(benchmark::State& state) {
+  namespace lp = mp::limb_product;
+  const bool assembly = state.range(0) == 0;
+  if (assembly && !lp::kAvailable) {
+    state.SkipWithError("this processor lacks mulx or adx");
+    return;
+  }
+  state.SetLabel(assembly ? "mulx/adx assembly" : "GMP mpn_mul_n");
+  std::mt19937_64 g(12);
+  std::vector<lp::Limb> a(6 * 1024), b(6 * 1024);
+  for (auto& x : a) x = g();
+  for (auto& x : b) x = g();
+  lp::Limb w[12];
+  for (auto _ : state)
+    for (std::size_t k = 0; k < 1024; ++k) {
+      if (assembly) lp::multiply6(w, &a[6 * k], &b[6 * k]);
+      else mpn_mul_n(w, &a[6 * k], &b[6 * k], 6);
+      benchmark::DoNotOptimize(w);
+    }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 1024));
 }
 
 // The same collisions as columns, solved on the lanes of one instruction set (the argument's index into
@@ -169,3 +196,4 @@ BENCHMARK(pc_crash_analyze<Engine::direct>);
 BENCHMARK(pc_crash_100<true>)->Name("pc_crash_lean_100_digits");
 BENCHMARK(pc_crash_100<false>)->Name("pc_crash_analyze_100_digits");
 BENCHMARK(scene_of_100)->Name("pc_crash_scene_of_100_digits");
+BENCHMARK(pc_crash_100_digits_product)->DenseRange(0, 1);

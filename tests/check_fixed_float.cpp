@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "impact3d/numeric/fixed_float.hpp"
+#include "impact3d/numeric/limb_product.hpp"
 #include "impact3d/numeric/lean.hpp"
 #include "impact3d/numeric/multiprecision.hpp"
 #include "impact3d/numeric/raw_collision.hpp"
@@ -155,6 +156,37 @@ TEST_CASE("FixedFloat's special values and the edges of the fast range are MPFR'
   for (const auto& a : values)
     for (const auto& b : values) checked += agree_all(a.x, b.x);
   CHECK(checked == 4 * 14 * 14);
+}
+
+// The product's assembly (limb_product.hpp, taken wherever the processor has mulx and adx) against GMP's
+// mpn_mul_n, limb for limb, on limbs drawn from patterns that reach its carries: all ones (every column
+// carries in both chains), zero, one, the top bit alone, all but the top bit, and uniform limbs; and on
+// squares, which FixedFloat also takes through it. Exact integers: any difference is an error.
+TEST_CASE("limb_product's assembly is GMP's product, limb for limb", "[fixed_float]") {
+  namespace lp = impact3d::mp::limb_product;
+  if (!lp::kAvailable) {
+    WARN("this processor lacks mulx or adx: FixedFloat takes GMP's product, and the assembly is not run");
+    return;
+  }
+  using Limb = lp::Limb;
+  std::mt19937_64 g(20261128);
+  const Limb patterns[] = {~Limb{0}, 0, 1, Limb{1} << 63, ~Limb{0} >> 1};
+  auto limb = [&] { const auto k = g() % 7; return k < 5 ? patterns[k] : g(); };
+  int checked = 0;
+  constexpr int kPairs = 100000;
+  for (int k = 0; k < kPairs; ++k) {
+    Limb a[6], b[6], mine[12], gmp[12];
+    for (int i = 0; i < 6; ++i) a[i] = limb(), b[i] = limb();
+    for (const Limb* rhs : {static_cast<const Limb*>(b), static_cast<const Limb*>(a)}) {
+      lp::multiply6(mine, a, rhs);
+      mpn_mul_n(gmp, a, rhs, 6);
+      bool same_limbs = true;
+      for (int i = 0; i < 12; ++i) same_limbs = same_limbs && mine[i] == gmp[i];
+      if (!same_limbs) FAIL_CHECK("the products of " << a[0] << ", ... differ");
+      checked += same_limbs;
+    }
+  }
+  CHECK(checked == 2 * kPairs);
 }
 
 // The quotient by an integer below 2^32 is FixedFloat's own long division by a precomputed inverse

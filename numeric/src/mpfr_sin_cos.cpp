@@ -2,10 +2,17 @@
 // against 1.7 us for mpfr_sin_cos), and where each enclosure's ends round to the same MPFR number, that
 // number is the correctly rounded value. Rounding to nearest is monotonic, so the true value, which lies
 // between the ends, rounds there too. Where the ends round apart (a value near a tie, or an enclosure
-// wider than usual, as Arb's cosine near pi/2) MPFR computes it.
+// wider than usual, as Arb's cosine near pi/2) MPFR computes it. Whether the ends round alike is first
+// read off the enclosure's limbs (round_ball, ball_rounding.hpp), at a fraction of the cost of rounding
+// both ends through Arb and MPFR; what it declines (a midpoint on a tie, a round-up into the next binade,
+// more limbs than the result) goes that way. At 100 digits it decided the sine and cosine of every one
+// of 100 000 drawn angles; at 50 digits (168 bits) Arb's enclosure carries a limb more than the result's
+// three, so it declines them all, and the ends are rounded as before.
 #include "impact3d/numeric/multiprecision.hpp"
 
 #include <arb.h>
+
+#include "impact3d/numeric/ball_rounding.hpp"
 
 namespace impact3d::mp {
 namespace {
@@ -62,7 +69,9 @@ void sin_cos(mpfr_ptr s, mpfr_ptr c, mpfr_srcptr x) {
     mag_zero(arb_radref(w.x));
     const slong bits = static_cast<slong>(p) + kGuardBits;
     arb_sin_cos(w.s, w.c, w.x, bits);
-    if (rounded_once(w.sine, w.other, w.s, w.lo, w.hi, bits) && rounded_once(w.cosine, w.other, w.c, w.lo, w.hi, bits)) {
+    // Mostly decided from the enclosures' limbs (ball_rounding.hpp); else by rounding their ends.
+    if ((round_ball(w.sine, w.s) && round_ball(w.cosine, w.c)) ||
+        (rounded_once(w.sine, w.other, w.s, w.lo, w.hi, bits) && rounded_once(w.cosine, w.other, w.c, w.lo, w.hi, bits))) {
       mpfr_set(s, w.sine, MPFR_RNDN);  // exact: the same precision
       mpfr_set(c, w.cosine, MPFR_RNDN);
       return;

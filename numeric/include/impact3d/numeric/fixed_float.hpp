@@ -3,7 +3,7 @@
 // value, bit for bit, as an MPFR number of precision P. It exists for speed alone. At 100 digits an MPFR
 // call costs about as much in bookkeeping as in arithmetic (each operand's precision, thread-local flags
 // and exponent range, a generic rounding), and Boost's number adds a zeroing constructor to every
-// temporary (BENCHMARKS.md); here a product is GMP's exact 2P-bit product (mpn_mul_n) rounded once, a
+// temporary (BENCHMARKS.md); here a product is the exact 2P-bit product (limb_product.hpp's assembly, or GMP's mpn_mul_n) rounded once, a
 // sum the exact sum rounded once, a quotient by an integer below 2^32 the exact quotient rounded once:
 // the definition MPFR implements. check_fixed_float holds every
 // operation to MPFR's, and check_lean the lean route computed in it to analyze's in Boost's numbers.
@@ -19,10 +19,12 @@
 // limb stored alone and read back in a wider load stalls until the store completes; and in a product,
 // in a sum of exponents less than 64 apart and in the rounding, the carry into a new place and the
 // round-up are shifts and adds by 0 or 1 rather than branches, which random operands would mispredict
-// half the time.
+// half the time (the round-up's carry past the lowest limb, which they almost never take, is a branch).
 #pragma once
 
 #include <mpfr.h>
+
+#include "impact3d/numeric/limb_product.hpp"
 
 #include <array>
 #include <bit>
@@ -147,14 +149,8 @@ class FixedFloat {
   [[gnu::noinline]] friend FixedFloat operator*(const FixedFloat& a, const FixedFloat& b) {
     FixedFloat out;
     if (a.kind_ == kRegular && b.kind_ == kRegular) {
-      Limb w[2 * kLimbs];
-      if (&a == &b) mpn_sqr(w, a.m_.data(), kLimbs);
-      else mpn_mul_n(w, a.m_.data(), b.m_.data(), kLimbs);
-      // GMP stored the product limb by limb: read it so, not in wider vector loads that would wait on
-      // those stores (each limb through a register).
       Limb p[2 * kLimbs];
-      #pragma GCC unroll 16
-      for (int k = 0; k < 2 * kLimbs; ++k) p[k] = in_register(w[k]);
+      product(p, a, b);
       // The product lies in [1/2, 1) (top bit set: t = 1) or in [1/4, 1/2) (t = 0: one place more).
       // Selected by shifts, not a branch: random operands would mispredict it half the time.
       const Limb t = p[2 * kLimbs - 1] >> 63;
@@ -299,6 +295,26 @@ class FixedFloat {
     return 0;
   }
 
+  // The exact 2P-bit product of the significands: in registers by limb_product.hpp's assembly where the
+  // processor has it (six limbs), else GMP's.
+  static void product(Limb (&p)[2 * kLimbs], const FixedFloat& a, const FixedFloat& b) {
+    if constexpr (kLimbs == 6) {
+      if (limb_product::kAvailable) limb_product::multiply6(p, a.m_.data(), b.m_.data());
+      else gmp_product(p, a, b);
+    } else {
+      gmp_product(p, a, b);
+    }
+  }
+  [[gnu::noinline]] static void gmp_product(Limb (&p)[2 * kLimbs], const FixedFloat& a, const FixedFloat& b) {
+    Limb w[2 * kLimbs];
+    if (&a == &b) mpn_sqr(w, a.m_.data(), kLimbs);
+    else mpn_mul_n(w, a.m_.data(), b.m_.data(), kLimbs);
+    // GMP stored the product limb by limb: read it so, not in wider vector loads that would wait on
+    // those stores (each limb through a register).
+    #pragma GCC unroll 16
+    for (int k = 0; k < 2 * kLimbs; ++k) p[k] = in_register(w[k]);
+  }
+
   static Limb in_register(Limb x) {
     asm("" : "+r"(x));
     return x;
@@ -314,21 +330,26 @@ class FixedFloat {
   // The exact value (0.r + below) x 2^e rounded to nearest, ties to even, written into `out`: r holds the
   // kLimbs limbs from the leading one, `sticky` whether anything nonzero lies below them. The limbs stay
   // in registers and are stored once (a number written limb by limb and read back in wider loads
-  // stalls), and the round-up is added through every limb rather than branched on. False where the
-  // result leaves the fast exponent range (MPFR's call then decides it).
+  // stalls), and the round-up is added rather than branched on (only its rare carry past the lowest limb
+  // is a branch). False where the result leaves the fast exponent range (MPFR's call then decides it).
   static bool round_into(FixedFloat& out, Limb (&r)[kLimbs], bool sticky, std::int64_t e, bool neg) {
     constexpr Limb half = Limb{1} << (kSpare - 1), below = half - 1;
     const Limb up = ((r[0] & half) != 0) & (sticky | ((r[0] & below) != 0) | ((r[0] >> kSpare) & 1));
     r[0] &= ~((half << 1) - 1);
-    Limb carry = up << kSpare;
-    #pragma GCC unroll 16
-    for (int i = 0; i < kLimbs; ++i) {
-      r[i] += carry;
-      carry = r[i] < carry;
-    }
-    if (carry) {  // 0.111...1 rounded up to 1 (every limb now 0): 0.1 x 2^(e + 1)
-      r[kLimbs - 1] = Limb{1} << 63;
-      ++e;
+    r[0] += up << kSpare;
+    // The round-up carries out of the lowest limb only where its kept bits were all ones (about once in
+    // 2^(64 - kSpare) for random operands): a branch nearly never taken, where a carry chain through
+    // every limb would make every rounding wait for it.
+    if (r[0] < (up << kSpare)) [[unlikely]] {
+      Limb carry = 1;
+      for (int i = 1; i < kLimbs; ++i) {
+        r[i] += carry;
+        carry = r[i] < carry;
+      }
+      if (carry) {  // 0.111...1 rounded up to 1 (every limb now 0): 0.1 x 2^(e + 1)
+        r[kLimbs - 1] = Limb{1} << 63;
+        ++e;
+      }
     }
     if (e > kFastExponent || e < -kFastExponent) return false;
     #pragma GCC unroll 16
