@@ -3,8 +3,10 @@
 // nearest: wherever round_ball decides, both ends round to the number it gives. The balls are drawn at
 // the edges its reasoning turns on: a midpoint at, beside and far from a tie, at the top and bottom of its
 // last place, with all its kept bits ones (the round-up carries into the next binade) or a power of two
-// (the numbers below lie closer), with fewer limbs than the result, and radii from zero to a few last
-// places. check_rotation holds the sines and cosines that use it to Boost's (MPFR's) bit for bit.
+// (the numbers below lie closer), with fewer limbs than the result; radii of none, of powers of two from
+// 2^-70 units of the midpoint's last limb bit to 2^20 last places, and of each distance to an end of
+// the rounding interval, a unit or half a unit either side, rounded up or down to a radius's 30 bits. check_rotation
+// holds the sines and cosines that use it to Boost's (MPFR's) bit for bit.
 #include <catch2/catch.hpp>
 
 #include <random>
@@ -33,6 +35,12 @@ struct Ball {
   Ball(const Ball&) = delete;
   Ball& operator=(const Ball&) = delete;
 };
+
+// b's radius set to r units of 2^unit (r below 2^30: exact).
+void set_radius(Ball& b, unsigned long r, long unit) {
+  mag_set_ui(arb_radref(b.x), r);
+  mag_mul_2exp_si(arb_radref(b.x), arb_radref(b.x), unit);
+}
 
 // The ball with midpoint 0.m x 2^e (n limbs, the sign `negative`) and radius man x 2^(rexp - 30).
 void set_ball(Ball& b, const mp_limb_t* m, int n, long e, bool negative, unsigned long man, long rexp) {
@@ -68,9 +76,9 @@ TEST_CASE("round_ball decides only balls whose ends round to one number, and giv
   std::mt19937_64 g(20261127);
   int checked = 0, decided = 0, wrong = 0;
   constexpr int kBalls = 40000;
-  // 100 digits (334 bits), 50 digits (170), quad (113), a whole number of limbs less one bit (383: no
+  // 100 digits (334 bits), 50 digits (168), quad (113), a whole number of limbs less one bit (383: no
   // room for the round bit and one below, so always declined), and 200.
-  for (const mpfr_prec_t p : {334, 170, 113, 200, 383}) {
+  for (const mpfr_prec_t p : {334, 168, 113, 200, 383}) {
     const int n = static_cast<int>((p + 63) / 64), spare = 64 * n - static_cast<int>(p);
     Numbers num(p);
     mpfr_t expected;
@@ -98,11 +106,29 @@ TEST_CASE("round_ball decides only balls whose ends round to one number, and giv
       }
       m[0] = (m[0] & ~((h << 1) - 1)) | low;
       m[n - 1] |= mp_limb_t{1} << 63;
-      const int zero_limbs = static_cast<int>(g() % static_cast<unsigned>(n));  // a midpoint of fewer limbs
-      for (int i = 0; i < zero_limbs; ++i) m[i] = 0;
+      if (g() % 4 == 0) {  // a midpoint of fewer limbs: its low bits zero
+        const int zero_limbs = static_cast<int>(g() % static_cast<unsigned>(n));
+        for (int i = 0; i < zero_limbs; ++i) m[i] = 0;
+        low = m[0] & ((h << 1) - 1);
+      }
       const long e = static_cast<long>(g() % 41) - 20, unit = e - 64 * n;
-      const unsigned long man = g() % 4 == 0 ? 0 : (1 + g() % (1ul << 30));
-      set_ball(b, m, n, e, (g() & 1) != 0, man, unit + static_cast<long>(g() % static_cast<unsigned>(spare + 6)) - 33);
+      set_ball(b, m, n, e, (g() & 1) != 0, 0, 0);
+      mag_struct* rad = arb_radref(b.x);
+      switch (g() % 4) {
+        case 0: break;  // none
+        case 1:         // man x 2^(j - 30) units, man < 2^30, j from -40 to spare + 20 (past 2^63 units)
+          mag_set_ui_2exp_si(rad, 1 + g() % (1ul << 30), unit - 70 + static_cast<long>(g() % static_cast<unsigned>(spare + 61)));
+          break;
+        default: {  // a distance to an end of the interval, or a unit or half a unit either side
+          const mp_limb_t distances[] = {h > low ? h - low : low - h, low + h, low + h / 2, 3 * h - low};
+          const bool halves = g() % 2 != 0;
+          mp_limb_t r = (distances[g() % 4] << (halves ? 1 : 0)) + g() % 3 - 1;  // in halves: d - 1/2, d, d + 1/2
+          if (r == 0) r = 1;
+          if (g() % 2) mag_set_ui(rad, r);
+          else mag_set_ui_lower(rad, r);
+          mag_mul_2exp_si(rad, rad, halves ? unit - 1 : unit);
+        }
+      }
       const bool alike = ends_round_alike(num, b, expected);
       mpfr_set_ui(num.out, 7, MPFR_RNDN);
       if (round_ball(num.out, b.x)) {
@@ -116,7 +142,7 @@ TEST_CASE("round_ball decides only balls whose ends round to one number, and giv
     }
     mpfr_clear(expected);
     if (spare < 2) CHECK(decided_here == 0);
-    else CHECK(decided_here > kBalls / 2);  // the path is taken, not only declined
+    else CHECK(decided_here > kBalls / 4);  // the path is taken, not only declined
     decided += decided_here;
   }
   CHECK(wrong == 0);
@@ -145,6 +171,20 @@ TEST_CASE("round_ball at a power of two and at a tie", "[ball_rounding]") {
   // Radius 0.6 h: the end below passes that boundary and rounds to the number below 1/2; declined.
   set_ball(b, half, 2, e, false, 644245095, unit + 14);  // 0.6 x 2^30
   CHECK_FALSE(ends_round_alike(num, b, expected));
+  CHECK_FALSE(round_ball(num.out, b.x));
+  // 1/2 and 2^12 units above it (R a power of two, low not zero): the end below is low + h/2 = 12288
+  // units away (not low + h: the numbers below 1/2 are h apart). Radius 12000: decided; 12400: declined.
+  const mp_limb_t above_half[2] = {mp_limb_t{1} << 12, mp_limb_t{1} << 63};
+  set_ball(b, above_half, 2, e, false, 0, 0);
+  set_radius(b, 12000, unit);
+  CHECK(ends_round_alike(num, b, expected));
+  REQUIRE(round_ball(num.out, b.x));
+  CHECK(mpfr_equal_p(num.out, expected));
+  set_radius(b, 12400, unit);
+  CHECK_FALSE(ends_round_alike(num, b, expected));
+  CHECK_FALSE(round_ball(num.out, b.x));
+  // An infinite radius: declined, however far the midpoint lies from a tie.
+  mag_inf(arb_radref(b.x));
   CHECK_FALSE(round_ball(num.out, b.x));
   // A tie with no radius: declined (MPFR's ties-to-even is left to the general route).
   const mp_limb_t tie[2] = {h, mp_limb_t{1} << 63};

@@ -337,6 +337,36 @@ TEST_CASE("FixedFloat's sqrt, floor, atan2, hypot, abs and limits are Boost's MP
   CHECK(checked == 20000);
 }
 
+// floor is FixedFloat's own for finite nonzero numbers below 2^P: held to mpfr_floor with the binary
+// point at every place of the significand and just outside it, on significands with long runs of ones
+// (a negative number's floor carrying into the next power of two), powers of two and few bits, both
+// signs; and on zeros, infinities and NaN (MPFR's call).
+TEST_CASE("FixedFloat's floor is mpfr_floor's at every place of the binary point", "[fixed_float]") {
+  Draw d;
+  Mpfr x, want;
+  int checked = 0, mismatched = 0;
+  for (long e = -3; e <= kP + 3; ++e)
+    for (int k = 0; k < 60; ++k) {
+      d.significand(x.x);
+      mpfr_mul_2si(x.x, x.x, e, MPFR_RNDN);  // exponent e: the point after e bits
+      mpfr_floor(want.x, x.x);
+      if (!same(floor(F::of(x.x)), want.x)) ++mismatched, UNSCOPED_INFO("exponent " << e << ", draw " << k);
+      ++checked;
+    }
+  for (const double v : {0.0, -0.0, 0.5, -0.5, 1.0, -1.0, -1.5, 2.0, -3.0}) {
+    mpfr_set_d(x.x, v, MPFR_RNDN);
+    mpfr_floor(want.x, x.x);
+    if (!same(floor(F(v)), want.x)) ++mismatched, UNSCOPED_INFO("at " << v);
+    ++checked;
+  }
+  mpfr_set_inf(x.x, -1), mpfr_floor(want.x, x.x);
+  mismatched += !same(floor(F::of(x.x)), want.x), ++checked;
+  mpfr_set_nan(x.x), mpfr_floor(want.x, x.x);
+  mismatched += !same(floor(F::of(x.x)), want.x), ++checked;
+  CHECK(mismatched == 0);
+  CHECK(checked == (kP + 7) * 60 + 9 + 2);
+}
+
 TEST_CASE("FixedFloat's exact zeros carry Boost's signs whatever the operands' value categories", "[fixed_float]") {
   // Boost's numbers without expression templates subtract a temporary on the right in place, as
   // -(b - a): an exact zero comes out -0 where a fresh difference gives +0. The expression shapes the

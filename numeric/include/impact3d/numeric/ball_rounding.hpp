@@ -3,8 +3,8 @@
 // (mpfr_sin_cos.cpp): rounding both ends of each enclosure through Arb and MPFR took a third as many
 // instructions as Arb's sine and cosine themselves (BENCHMARKS.md).
 //
-// Rounding to nearest is monotonic, so the ball [m - r, m + r] rounds to one number R = RN(m) exactly
-// when both ends lie strictly inside R's interval: above R - (the gap below R) / 2 and below
+// Rounding to nearest is monotonic, so the ball [m - r, m + r] rounds to one number R = RN(m) when
+// both ends lie strictly inside R's interval (an end on its boundary may round either way): above R - (the gap below R) / 2 and below
 // R + (the gap above R) / 2. In units of m's lowest limb bit, with `low` the bits of m below R's last
 // place and h half a last place:
 // - m rounded down (low < h): the end above is h - low away; the one below low + h, or low + h / 2
@@ -12,8 +12,9 @@
 // - m rounded up (low > h): R - m is 2h - low, so the end above is 3h - low away and the one below
 //   low - h (the number below R is m truncated, in R's binade).
 // The ball is decided where r < the nearer distance. Declined, for the caller's general route: a tie
-// (low = h), a round-up carrying into the next binade, a midpoint of more limbs than the result, special
-// values and exponents beyond a machine word. Declining is never wrong, only slower.
+// (low = h), a round-up carrying into the next binade, a midpoint of more limbs than the result, a
+// special midpoint or an infinite radius, exponents beyond 2^40 in magnitude (the unit arithmetic below
+// then cannot overflow) and precisions beyond eight limbs. Declining is never wrong, only slower.
 #pragma once
 
 #include <arb.h>
@@ -30,18 +31,23 @@ inline bool round_ball(mpfr_ptr out, const arb_t b) {
   constexpr int kMaxLimbs = 8;
   const arf_struct* mid = arb_midref(b);
   const mag_struct* rad = arb_radref(b);
+  constexpr slong kExponentBound = slong{1} << 40;
   const mpfr_prec_t p = mpfr_get_prec(out);
-  const int n = static_cast<int>((p + 63) / 64), spare = 64 * n - static_cast<int>(p);
-  if (n > kMaxLimbs || spare < 2 || arf_is_special(mid) || COEFF_IS_MPZ(ARF_EXP(mid)) || COEFF_IS_MPZ(MAG_EXP(rad)))
+  if (p > 64 * kMaxLimbs || arf_is_special(mid) || !mag_is_finite(rad) || COEFF_IS_MPZ(ARF_EXP(mid)) ||
+      COEFF_IS_MPZ(MAG_EXP(rad)))
     return false;
+  const slong e = ARF_EXP(mid), rad_exp = MAG_EXP(rad);
+  if (e < -kExponentBound || e > kExponentBound || rad_exp < -kExponentBound || rad_exp > kExponentBound ||
+      e < mpfr_get_emin() || e > mpfr_get_emax())
+    return false;
+  const int n = static_cast<int>((p + 63) / 64), spare = 64 * n - static_cast<int>(p);
+  if (spare < 2) return false;
   const Limb* xp;
   mp_size_t xn;
   ARF_GET_MPN_READONLY(xp, xn, mid);
   if (xn > n) return false;
   Limb m[kMaxLimbs] = {};  // m's limbs at the top of n, the value 0.m x 2^e as MPFR's
   for (mp_size_t i = 0; i < xn; ++i) m[n - xn + i] = xp[i];
-  const slong e = ARF_EXP(mid);
-  if (e < mpfr_get_emin() || e > mpfr_get_emax()) return false;
 
   const Limb h = Limb{1} << (spare - 1), low = m[0] & ((h << 1) - 1);
   if (low == h) return false;
@@ -66,14 +72,14 @@ inline bool round_ball(mpfr_ptr out, const arb_t b) {
   // r = man x 2^(exp - MAG_BITS); in units of 2^(e - 64 n): man x 2^shift.
   const Limb man = MAG_MAN(rad);
   if (man != 0) {
-    const slong shift = MAG_EXP(rad) - MAG_BITS - e + 64 * n;
+    const slong shift = rad_exp - MAG_BITS - e + 64 * n;
     if (shift >= 0) {
       if (shift > 63 - MAG_BITS || (man << shift) >= distance) return false;
     } else if (shift > -64) {
       // man x 2^shift < distance, as man < distance x 2^-shift, exactly.
       const unsigned __int128 scaled = static_cast<unsigned __int128>(distance) << -shift;
       if (man >= scaled) return false;
-    }  // else r < 2^-63 units: below any distance, which is at least 1
+    }  // else r < 2^30 x 2^-64 units: below any distance, which is at least 1
   }
 
   Limb* d = static_cast<Limb*>(mpfr_custom_get_significand(out));

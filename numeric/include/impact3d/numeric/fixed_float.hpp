@@ -1,12 +1,13 @@
 // A binary floating-point number of P bits held in fixed limbs, whose +, - and x are rounded here,
-// correctly to nearest (ties to even), and whose other operations are MPFR's own calls on it: the same
-// value, bit for bit, as an MPFR number of precision P. It exists for speed alone. At 100 digits an MPFR
-// call costs about as much in bookkeeping as in arithmetic (each operand's precision, thread-local flags
-// and exponent range, a generic rounding), and Boost's number adds a zeroing constructor to every
-// temporary (BENCHMARKS.md); here a product is the exact 2P-bit product (limb_product.hpp's assembly, or GMP's mpn_mul_n) rounded once, a
-// sum the exact sum rounded once, a quotient by an integer below 2^32 the exact quotient rounded once:
-// the definition MPFR implements. check_fixed_float holds every
-// operation to MPFR's, and check_lean the lean route computed in it to analyze's in Boost's numbers.
+// correctly to nearest (ties to even), as are a quotient by a small integer and floor, and whose other
+// operations are MPFR's own calls on it: the same value, bit for bit, as an MPFR number of precision P.
+// It exists for speed alone. At 100 digits an MPFR call costs about as much in bookkeeping as in
+// arithmetic (each operand's precision, thread-local flags and exponent range, a generic rounding), and
+// Boost's number adds a zeroing constructor to every temporary (BENCHMARKS.md); here a product is the
+// exact 2P-bit product (limb_product.hpp's assembly, or GMP's mpn_mul_n) rounded once, a sum the exact
+// sum rounded once, a quotient by an integer below 2^32 the exact quotient rounded once: the definition
+// MPFR implements. check_fixed_float holds every operation to MPFR's, and check_lean the lean route
+// computed in it to analyze's in Boost's numbers.
 //
 // Layout as MPFR's: a regular value is 0.m x 2^e with the top bit of m set, the bits below P zero.
 // Exponents stay within the fast range below, far inside MPFR's default [1 - 2^30, 2^30 - 1], which
@@ -138,6 +139,37 @@ class FixedFloat {
   bool negative() const { return neg_; }
   std::int64_t exponent() const { return e_; }
   const std::array<Limb, kLimbs>& limbs() const { return m_; }
+
+  // The largest integer <= this: mpfr_floor's number (exact, as every floor is), computed here since
+  // sin_cos_deg takes two an angle. The bits below the binary point cleared, and a negative number with
+  // any of them set made one larger in magnitude; |x| < 1 gives +0 or -1; an infinity, a NaN, a zero and
+  // an integer already are MPFR's.
+  FixedFloat floored() const {
+    if (kind_ != kRegular || e_ >= P)
+      return call([](mpfr_ptr r, mpfr_srcptr a, mpfr_rnd_t) { return mpfr_floor(r, a); }, *this);
+    if (e_ <= 0) return neg_ ? FixedFloat(-1) : FixedFloat();
+    const int cut = 64 * kLimbs - static_cast<int>(e_);  // bits below the point, 1 <= cut < 64 kLimbs
+    FixedFloat out = *this;
+    bool fraction = false;
+    for (int i = 0; i < kLimbs; ++i) {
+      const int below = cut - 64 * i;  // of limb i's bits, how many lie below the point
+      const Limb mask = below >= 64 ? ~Limb{0} : below <= 0 ? Limb{0} : (Limb{1} << below) - 1;
+      fraction = fraction || (out.m_[i] & mask) != 0;
+      out.m_[i] &= ~mask;
+    }
+    if (neg_ && fraction) {  // one more in magnitude: 2^cut added to the limbs
+      Limb carry = Limb{1} << (cut % 64);
+      for (int i = cut / 64; i < kLimbs && carry != 0; ++i) {
+        out.m_[i] += carry;
+        carry = out.m_[i] < carry;
+      }
+      if (carry != 0) {  // every kept bit was one: the next power of two
+        out.m_[kLimbs - 1] = Limb{1} << 63;
+        ++out.e_;
+      }
+    }
+    return out;
+  }
 
   friend FixedFloat operator-(FixedFloat a) {
     a.neg_ = !a.neg_;
@@ -337,9 +369,9 @@ class FixedFloat {
     const Limb up = ((r[0] & half) != 0) & (sticky | ((r[0] & below) != 0) | ((r[0] >> kSpare) & 1));
     r[0] &= ~((half << 1) - 1);
     r[0] += up << kSpare;
-    // The round-up carries out of the lowest limb only where its kept bits were all ones (about once in
-    // 2^(64 - kSpare) for random operands): a branch nearly never taken, where a carry chain through
-    // every limb would make every rounding wait for it.
+    // The round-up carries out of the lowest limb only where its kept bits were all ones and it rounds up
+    // (about once in 2^(65 - kSpare) for random operands): a branch nearly never taken, where a carry
+    // chain through every limb would make every rounding wait for it.
     if (r[0] < (up << kSpare)) [[unlikely]] {
       Limb carry = 1;
       for (int i = 1; i < kLimbs; ++i) {
@@ -547,7 +579,7 @@ FixedFloat<P> sqrt(const FixedFloat<P>& x) {
 }
 template <int P>
 FixedFloat<P> floor(const FixedFloat<P>& x) {
-  return FixedFloat<P>::call([](mpfr_ptr r, mpfr_srcptr a, mpfr_rnd_t) { return mpfr_floor(r, a); }, x);
+  return x.floored();
 }
 template <int P>
 FixedFloat<P> atan2(const FixedFloat<P>& y, const FixedFloat<P>& x) {

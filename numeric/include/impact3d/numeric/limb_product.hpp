@@ -6,11 +6,13 @@
 // product there against 12 ns here (BENCHMARKS.md), and a 100-digit collision makes about 480 of them.
 //
 // x86-64 only, and only where the processor has BMI2 (mulx) and ADX (adcx, adox), read once from cpuid;
-// elsewhere, and under tools that hide them (valgrind does), FixedFloat keeps GMP's mpn_mul_n. The two
-// give the same integer, which tests/check_fixed_float.cpp holds limb for limb.
+// elsewhere, under tools that hide them (valgrind does), and with IMPACT3D_GMP_PRODUCT set, FixedFloat
+// keeps GMP's mpn_mul_n. The two give the same integer, which tests/check_fixed_float.cpp holds limb for
+// limb.
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <cpuid.h>
@@ -27,8 +29,10 @@ using Limb = std::uint64_t;
 
 // cpuid leaf 7: EBX bit 8 is BMI2, bit 19 ADX (Intel SDM vol. 2A, CPUID). Read at start-up; a product
 // taken before then (another translation unit's static initialiser) reads false and takes GMP's path,
-// which gives the same integer.
+// which gives the same integer. IMPACT3D_GMP_PRODUCT set (to anything but empty) takes GMP's path
+// everywhere: the tests run once so, to hold that path too on processors that have the instructions.
 inline bool has_mulx_adx() {
+  if (const char* v = std::getenv("IMPACT3D_GMP_PRODUCT"); v != nullptr && *v != '\0') return false;
   unsigned a = 0, b = 0, c = 0, d = 0;
   if (__get_cpuid_count(7, 0, &a, &b, &c, &d) == 0) return false;
   return (b & (1u << 8)) != 0 && (b & (1u << 19)) != 0;
