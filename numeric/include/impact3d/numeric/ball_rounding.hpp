@@ -4,9 +4,9 @@
 // instructions as Arb's sine and cosine themselves (BENCHMARKS.md).
 //
 // Rounding to nearest is monotonic, so the ball [m - r, m + r] rounds to one number R = RN(m) when
-// both ends lie strictly inside R's interval (an end on its boundary may round either way): above R - (the gap below R) / 2 and below
-// R + (the gap above R) / 2. In units of m's lowest limb bit, with `low` the bits of m below R's last
-// place and h half a last place:
+// both ends lie strictly inside R's interval, above R - (the gap below R) / 2 and below R + (the gap
+// above R) / 2 (an end on a boundary may round either way). In units of m's lowest limb bit, with `low`
+// the bits of m below R's last place and h half a last place:
 // - m rounded down (low < h): the end above is h - low away; the one below low + h, or low + h / 2
 //   where R is a power of two (the numbers below it lie half as far apart);
 // - m rounded up (low > h): R - m is 2h - low, so the end above is 3h - low away and the one below
