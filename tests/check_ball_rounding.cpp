@@ -3,9 +3,11 @@
 // nearest: wherever round_ball decides, both ends round to the number it gives. The balls are drawn at
 // the edges its reasoning turns on: a midpoint at, beside and far from a tie, at the top and bottom of its
 // last place, with all its kept bits ones (the round-up carries into the next binade) or a power of two
-// (the numbers below lie closer), with fewer limbs than the result; radii of none, of powers of two from
-// 2^-70 units of the midpoint's last limb bit to 2^20 last places, and of each distance to an end of
-// the rounding interval, a unit or half a unit either side, rounded up or down to a radius's 30 bits. check_rotation
+// (the numbers below lie closer), with fewer limbs than the result; radii of none, of 30-bit mantissas
+// times powers of two from 2^-70 units of the midpoint's last limb bit to 2^20 last places (past 2^63
+// units where the last place is 2^44 units or more: the decline of radii too large to shift), and of each
+// distance to an end of the rounding interval, a unit or half a unit either side (exactly so where that
+// fits a radius's 30 bits; else rounded up or down to them). check_rotation
 // holds the sines and cosines that use it to Boost's (MPFR's) bit for bit.
 #include <catch2/catch.hpp>
 
@@ -104,6 +106,7 @@ TEST_CASE("round_ball decides only balls whose ends round to one number, and giv
         case 4: low = (h << 1) - 1 - g() % 3; break;      // just below the next number
         default: low = g() & ((h << 1) - 1);
       }
+      low &= (h << 1) - 1;  // within the bits below the last place (at 383 bits, h = 1)
       m[0] = (m[0] & ~((h << 1) - 1)) | low;
       m[n - 1] |= mp_limb_t{1} << 63;
       if (g() % 4 == 0) {  // a midpoint of fewer limbs: its low bits zero
@@ -116,13 +119,14 @@ TEST_CASE("round_ball decides only balls whose ends round to one number, and giv
       mag_struct* rad = arb_radref(b.x);
       switch (g() % 4) {
         case 0: break;  // none
-        case 1:         // man x 2^(j - 30) units, man < 2^30, j from -40 to spare + 20 (past 2^63 units)
+        case 1:         // man x 2^(j - 30) units, 1 <= man <= 2^30, j from -40 to spare + 20
           mag_set_ui_2exp_si(rad, 1 + g() % (1ul << 30), unit - 70 + static_cast<long>(g() % static_cast<unsigned>(spare + 61)));
           break;
         default: {  // a distance to an end of the interval, or a unit or half a unit either side
           const mp_limb_t distances[] = {h > low ? h - low : low - h, low + h, low + h / 2, 3 * h - low};
           const bool halves = g() % 2 != 0;
-          mp_limb_t r = (distances[g() % 4] << (halves ? 1 : 0)) + g() % 3 - 1;  // in halves: d - 1/2, d, d + 1/2
+          const mp_limb_t d = distances[g() % 4] << (halves ? 1 : 0);
+          mp_limb_t r = d == 0 ? 1 : d + g() % 3 - 1;  // in halves: d - 1/2, d, d + 1/2
           if (r == 0) r = 1;
           if (g() % 2) mag_set_ui(rad, r);
           else mag_set_ui_lower(rad, r);
@@ -172,15 +176,16 @@ TEST_CASE("round_ball at a power of two and at a tie", "[ball_rounding]") {
   set_ball(b, half, 2, e, false, 644245095, unit + 14);  // 0.6 x 2^30
   CHECK_FALSE(ends_round_alike(num, b, expected));
   CHECK_FALSE(round_ball(num.out, b.x));
-  // 1/2 and 2^12 units above it (R a power of two, low not zero): the end below is low + h/2 = 12288
-  // units away (not low + h: the numbers below 1/2 are h apart). Radius 12000: decided; 12400: declined.
-  const mp_limb_t above_half[2] = {mp_limb_t{1} << 12, mp_limb_t{1} << 63};
+  // 1/2 and 2^11 units above it (R a power of two, low not zero): the end below is low + h/2 = 10240
+  // units away (not low + h: the numbers below 1/2 are h apart), the end above h - low = 14336. Radius
+  // 10000: decided; 10400: the end below crosses, the end above does not; declined.
+  const mp_limb_t above_half[2] = {mp_limb_t{1} << 11, mp_limb_t{1} << 63};
   set_ball(b, above_half, 2, e, false, 0, 0);
-  set_radius(b, 12000, unit);
+  set_radius(b, 10000, unit);
   CHECK(ends_round_alike(num, b, expected));
   REQUIRE(round_ball(num.out, b.x));
   CHECK(mpfr_equal_p(num.out, expected));
-  set_radius(b, 12400, unit);
+  set_radius(b, 10400, unit);
   CHECK_FALSE(ends_round_alike(num, b, expected));
   CHECK_FALSE(round_ball(num.out, b.x));
   // An infinite radius: declined, however far the midpoint lies from a tie.

@@ -14,7 +14,9 @@
 // The ball is decided where r < the nearer distance. Declined, for the caller's general route: a tie
 // (low = h), a round-up carrying into the next binade, a midpoint of more limbs than the result, a
 // special midpoint or an infinite radius, exponents beyond 2^40 in magnitude (the unit arithmetic below
-// then cannot overflow) and precisions beyond eight limbs. Declining is never wrong, only slower.
+// then cannot overflow) or outside MPFR's current range, precisions beyond eight limbs, and precisions
+// that leave fewer than two of their limbs' bits unused (383 bits, say). Declining is never wrong, only
+// slower.
 #pragma once
 
 #include <arb.h>

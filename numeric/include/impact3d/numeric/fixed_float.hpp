@@ -1,6 +1,6 @@
-// A binary floating-point number of P bits held in fixed limbs, whose +, - and x are rounded here,
-// correctly to nearest (ties to even), as are a quotient by a small integer and floor, and whose other
-// operations are MPFR's own calls on it: the same value, bit for bit, as an MPFR number of precision P.
+// A binary floating-point number of P bits held in fixed limbs, whose +, - and x and quotient by a small
+// integer are rounded here, correctly to nearest (ties to even), whose floor (exact) is taken here too,
+// and whose other operations are MPFR's own calls on it: the same value, bit for bit, as an MPFR number of precision P.
 // It exists for speed alone. At 100 digits an MPFR call costs about as much in bookkeeping as in
 // arithmetic (each operand's precision, thread-local flags and exponent range, a generic rounding), and
 // Boost's number adds a zeroing constructor to every temporary (BENCHMARKS.md); here a product is the
@@ -143,7 +143,7 @@ class FixedFloat {
   // The largest integer <= this: mpfr_floor's number (exact, as every floor is), computed here since
   // sin_cos_deg takes two an angle. The bits below the binary point cleared, and a negative number with
   // any of them set made one larger in magnitude; |x| < 1 gives +0 or -1; an infinity, a NaN, a zero and
-  // an integer already are MPFR's.
+  // a number of 2^P or more (an integer already) are MPFR's.
   FixedFloat floored() const {
     if (kind_ != kRegular || e_ >= P)
       return call([](mpfr_ptr r, mpfr_srcptr a, mpfr_rnd_t) { return mpfr_floor(r, a); }, *this);
@@ -151,6 +151,7 @@ class FixedFloat {
     const int cut = 64 * kLimbs - static_cast<int>(e_);  // bits below the point, 1 <= cut < 64 kLimbs
     FixedFloat out = *this;
     bool fraction = false;
+    #pragma GCC unroll 16
     for (int i = 0; i < kLimbs; ++i) {
       const int below = cut - 64 * i;  // of limb i's bits, how many lie below the point
       const Limb mask = below >= 64 ? ~Limb{0} : below <= 0 ? Limb{0} : (Limb{1} << below) - 1;
