@@ -57,13 +57,8 @@ inline bool round_ball(mpfr_ptr out, const arb_t b) {
   Limb distance;
   m[0] -= low;  // R's limbs, before a round-up
   if (up) {
-    Limb carry = h << 1;
-    for (int i = 0; i < n && carry; ++i) {
-      m[i] += carry;
-      carry = m[i] < carry;
-    }
-    if (carry) return false;  // into the next binade
-    distance = low - h;       // the end below; the one above, 3h - low, is further
+    if (mpn_add_1(m, m, n, h << 1) != 0) return false;  // into the next binade
+    distance = low - h;  // the end below; the one above, 3h - low, is further
   } else {
     bool power_of_two = m[n - 1] == Limb{1} << 63;
     for (int i = 0; i < n - 1; ++i) power_of_two = power_of_two && m[i] == 0;

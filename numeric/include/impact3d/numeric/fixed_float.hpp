@@ -159,12 +159,9 @@ class FixedFloat {
       out.m_[i] &= ~mask;
     }
     if (neg_ && fraction) {  // one more in magnitude: 2^cut added to the limbs
-      Limb carry = Limb{1} << (cut % 64);
-      for (int i = cut / 64; i < kLimbs && carry != 0; ++i) {
-        out.m_[i] += carry;
-        carry = out.m_[i] < carry;
-      }
-      if (carry != 0) {  // every kept bit was one: the next power of two
+      Limb* from = out.m_.data() + cut / 64;
+      if (mpn_add_1(from, from, kLimbs - cut / 64, Limb{1} << (cut % 64)) != 0) {
+        // every kept bit was one: the next power of two
         out.m_[kLimbs - 1] = Limb{1} << 63;
         ++out.e_;
       }
@@ -374,12 +371,7 @@ class FixedFloat {
     // (about once in 2^(65 - kSpare) for random operands): a branch nearly never taken, where a carry
     // chain through every limb would make every rounding wait for it.
     if (r[0] < (up << kSpare)) [[unlikely]] {
-      Limb carry = 1;
-      for (int i = 1; i < kLimbs; ++i) {
-        r[i] += carry;
-        carry = r[i] < carry;
-      }
-      if (carry) {  // 0.111...1 rounded up to 1 (every limb now 0): 0.1 x 2^(e + 1)
+      if (mpn_add_1(r + 1, r + 1, kLimbs - 1, 1) != 0) {  // 0.111...1 rounded up to 1: 0.1 x 2^(e + 1)
         r[kLimbs - 1] = Limb{1} << 63;
         ++e;
       }
