@@ -9,6 +9,7 @@
 // exponents beyond the fast range (MPFR's own call must then be taken).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <bit>
 #include <random>
 #include <vector>
@@ -161,7 +162,8 @@ TEST_CASE("FixedFloat's special values and the edges of the fast range are MPFR'
 // The product's assembly (limb_product.hpp, taken wherever the processor has mulx and adx) against GMP's
 // mpn_mul_n, limb for limb, on limbs drawn from patterns that reach its carries: all ones (every column
 // carries in both chains), zero, one, the top bit alone, all but the top bit, and uniform limbs; and on
-// squares, which FixedFloat also takes through it. Exact integers: any difference is an error.
+// squares, which FixedFloat also takes through it. Exact integers: any difference is an error. The top
+// product (multiply6_high) is held to its bound below the whole on the same operands.
 TEST_CASE("limb_product's assembly is GMP's product, limb for limb", "[fixed_float]") {
   namespace lp = impact3d::mp::limb_product;
   if (!lp::kAvailable) {
@@ -173,7 +175,21 @@ TEST_CASE("limb_product's assembly is GMP's product, limb for limb", "[fixed_flo
   std::mt19937_64 g(20261128);
   const Limb patterns[] = {~Limb{0}, 0, 1, Limb{1} << 63, ~Limb{0} >> 1};
   auto limb = [&] { const auto k = g() % 7; return k < 5 ? patterns[k] : g(); };
-  int checked = 0;
+  // The top product (21 of the 36 limb products) within its stated bound below the whole:
+  // 0 <= a * b - T < 5 * 2^384, T its limbs 5 .. 11 times 2^320.
+  Limb last_gap = 0;
+  auto top_within = [&](const Limb* a, const Limb* b) {
+    Limb whole[12], top[7], t[12] = {}, gap[12];
+    mpn_mul_n(whole, a, b, 6);
+    lp::multiply6_high(top, a, b);
+    for (int i = 0; i < 7; ++i) t[5 + i] = top[i];
+    bool within = mpn_sub_n(gap, whole, t, 12) == 0 && gap[6] < 5;
+    for (int i = 7; i < 12; ++i) within = within && gap[i] == 0;
+    if (!within) FAIL_CHECK("the top product of " << a[0] << ", ... is not within 5 * 2^384 below the whole");
+    last_gap = gap[6];
+    return static_cast<int>(within);
+  };
+  int checked = 0, top_checked = 0;
   constexpr int kPairs = 100000;
   for (int k = 0; k < kPairs; ++k) {
     Limb a[6], b[6], mine[12], gmp[12];
@@ -185,19 +201,64 @@ TEST_CASE("limb_product's assembly is GMP's product, limb for limb", "[fixed_flo
       for (int i = 0; i < 12; ++i) same_limbs = same_limbs && mine[i] == gmp[i];
       if (!same_limbs) FAIL_CHECK("the products of " << a[0] << ", ... differ");
       checked += same_limbs;
+      top_checked += top_within(a, rhs);
     }
   }
   CHECK(checked == 2 * kPairs);
+  CHECK(top_checked == 2 * kPairs);
+  // All-ones limbs leave out the most: 4.99... * 2^384, so the bound is nearly reached there.
+  Limb ones[6];
+  std::fill(ones, ones + 6, ~Limb{0});
+  CHECK(top_within(ones, ones) == 1);
+  CHECK(last_gap == 4);
 }
 
-// The quotient by an integer below 2^32 is FixedFloat's own long division by a precomputed inverse
-// (MPFR's division by a machine integer where the result leaves the fast range): held here to mpfr_div
-// on the integers that path takes, those just beyond it (2^32, a half-integer), numerators of every kind,
-// down to where the quotient underflows, and exact multiples. (Whether the path is taken only speed shows.)
+// top_decides against the rounding it stands for: wherever it says the top decides, every value the
+// whole product or quotient can take, [x, x + 13) units of x's lowest bit (limb_product.hpp's bound
+// and the reciprocal's, doubled by the normalizing shift, and T's bits under x), rounds to nearest as x
+// does, and none is a tie. Checked in
+// half units at every x within 20 of the tie, of the top and of zero, and at drawn x; and it must decide
+// x = 0 (an exact product of short operands) and almost every drawn x, else the fast path is idle.
+TEST_CASE("A product's top decides its rounding only where the rest cannot change it", "[fixed_float]") {
+  using Limb = F::Limb;
+  constexpr Limb half = Limb{1} << (F::kSpare - 1), top = 2 * half;
+  // The kept part's change from rounding y half units: 0 down, 1 up, -1 a tie.
+  auto rounding = [&](Limb y) -> int {
+    if (y >= 2 * top) return 1;  // carried into the last place, then rounded down: the same as up from below
+    return y < 2 * half ? 0 : y > 2 * half ? 1 : -1;
+  };
+  std::vector<Limb> xs;
+  for (Limb k = 0; k <= 40; ++k) xs.insert(xs.end(), {half - 20 + k, top - 1 - k / 2, k / 2});
+  std::mt19937_64 g(20261127);
+  int decided_drawn = 0;
+  constexpr int kDrawn = 100000;
+  for (int k = 0; k < kDrawn; ++k) {
+    xs.push_back(g() % top);
+    decided_drawn += F::top_decides(xs.back());
+  }
+  int checked = 0;
+  for (const Limb x : xs) {
+    if (!F::top_decides(x)) continue;
+    bool same = rounding(2 * x) != -1;
+    for (Limb h = 1; h < 26; ++h) same = same && rounding(2 * x + h) == rounding(2 * x);
+    if (!same) FAIL_CHECK("top_decides(" << x << ") though the rest can change its rounding");
+    checked += same;
+  }
+  CHECK(F::top_decides(0));
+  CHECK(decided_drawn >= kDrawn - 1);
+  CHECK(checked > kDrawn);
+}
+
+// The quotient by an integer below 2^32 is FixedFloat's own: a product by the divisor's reciprocal
+// where the assembly runs, else (with IMPACT3D_GMP_PRODUCT set, the suite's second run, and for powers
+// of two) a long division by a precomputed inverse; MPFR's division by a machine integer where the result
+// leaves the fast range. Held here to mpfr_div on the integers those paths take, those just beyond them
+// (2^32, a half-integer), numerators of every kind, down to where the quotient underflows, and exact
+// multiples. (Whether a path is taken only speed shows.)
 TEST_CASE("FixedFloat divided by an integer is MPFR's quotient, bit for bit", "[fixed_float]") {
   Draw d;
   // 2^31 + 1: its limb d = 2^63 + 2^32 lies far from its reciprocal's 2^128 / d, so the long division's
-  // second correction (the estimate two short) is taken there.
+  // second correction (the estimate two short) is taken there, in the run that takes the long division.
   std::vector<double> divisors{1, -1, 2, 3, -3, 4, -4, 7, 90, -90, 180, -180, 360, 2147483648.0, 2147483649.0,
                                4294967295.0, -4294967295.0, 4294967296.0, 4294967297.0, 90.5, 0.5};
   for (int k = 0; k < 40; ++k) divisors.push_back(static_cast<double>(1 + d.g() % 4294967295ULL) * (k % 2 ? -1 : 1));

@@ -1,13 +1,14 @@
 // A binary floating-point number of P bits held in fixed limbs, whose +, - and x and quotient by a small
-// integer are rounded here, correctly to nearest (ties to even), whose floor (exact) is taken here too,
-// and whose other operations are MPFR's own calls on it: the same value, bit for bit, as an MPFR number of precision P.
-// It exists for speed alone. At 100 digits an MPFR call costs about as much in bookkeeping as in
+// integer are rounded here, correctly to nearest (ties to even), whose floor (exact) is taken here too, and
+// whose other operations are MPFR's own calls on it: the same value, bit for bit, as an MPFR number of
+// precision P. It exists for speed alone. At 100 digits an MPFR call costs about as much in bookkeeping as in
 // arithmetic (each operand's precision, thread-local flags and exponent range, a generic rounding), and
-// Boost's number adds a zeroing constructor to every temporary (BENCHMARKS.md); here a product is the
-// exact 2P-bit product (limb_product.hpp's assembly, or GMP's mpn_mul_n) rounded once, a sum the exact
-// sum rounded once, a quotient by an integer below 2^32 the exact quotient rounded once: the definition
-// MPFR implements. check_fixed_float holds every operation to MPFR's, and check_lean the lean route
-// computed in it to analyze's in Boost's numbers.
+// Boost's number adds a zeroing constructor to every temporary (BENCHMARKS.md); here a product is the exact
+// 2P-bit product (limb_product.hpp's assembly, or GMP's mpn_mul_n) rounded once, a sum the exact sum rounded
+// once, a quotient by an integer below 2^32 the exact quotient rounded once: the definition MPFR implements.
+// (Where the assembly runs, a product and a quotient are mostly rounded from the top of a product alone,
+// where a bound on the rest shows it rounds the same: top_decides.) check_fixed_float holds every operation
+// to MPFR's, and check_lean the lean route computed in it to analyze's in Boost's numbers.
 //
 // Layout as MPFR's: a regular value is 0.m x 2^e with the top bit of m set, the bits below P zero.
 // Exponents stay within the fast range below, far inside MPFR's default [1 - 2^30, 2^30 - 1], which
@@ -179,6 +180,9 @@ class FixedFloat {
   [[gnu::noinline]] friend FixedFloat operator*(const FixedFloat& a, const FixedFloat& b) {
     FixedFloat out;
     if (a.kind_ == kRegular && b.kind_ == kRegular) {
+      if constexpr (kLimbs == 6 && kSpare >= 8) {
+        if (limb_product::kAvailable && top_product_into(out, a, b)) return out;
+      }
       Limb p[2 * kLimbs];
       product(p, a, b);
       // The product lies in [1/2, 1) (top bit set: t = 1) or in [1/4, 1/2) (t = 0: one place more).
@@ -228,8 +232,8 @@ class FixedFloat {
   friend FixedFloat operator-(FixedFloat&& a, V b) {
     return add(a, FixedFloat(b), true);
   }
-  // By an integer divisor below 2^32 (the 90 and 180 of every angle's reduction): the exact quotient
-  // rounded once (quotient_by_limb), so mpfr_div's number, in a fraction of the time; a zero numerator,
+  // By an integer divisor below 2^32 (the 90 and 180 of every angle's reduction): the quotient rounded
+  // once (quotient_by_limb), so mpfr_div's number, in a fraction of the time; a zero numerator,
   // or a quotient leaving the fast range, MPFR's division by a machine integer. Every path writes the
   // one result object, as operator* does.
   friend FixedFloat operator/(const FixedFloat& a, const FixedFloat& b) {
@@ -291,6 +295,21 @@ class FixedFloat {
     return r;
   }
 
+  // Whether a product whose top T (limb_product::multiply6_high), normalized, leaves `x` below the last
+  // place (the round bit and the kSpare - 1 bits under it) rounds as T alone would. The whole product
+  // lies in [T, T + 5 * 2^384) (the 15 limb products left out), a quotient read as a product (in
+  // quotient_by_limb) in [T, T + 6 * 2^384): so, after the normalizing shift and with T's own bits
+  // under x, in [x, x + 13) units of x's lowest bit. It rounds as x does unless that range could reach
+  // the tie: x in [half - 12, half]; 16 for 12 leaves a margin. (A range that carries into the last
+  // place rounds up as x does: the rest is then far below half.) At 334 bits random products land
+  // there about once in 2^45, a quotient never (quotient_by_limb), and an exact product of short
+  // operands (doubles', integers') at x = 0, away from it. Public for check_fixed_float.
+  static constexpr bool top_decides(Limb x) {
+    static_assert(kSpare >= 8, "room below the last place for the slop");
+    constexpr Limb half = Limb{1} << (kSpare - 1), slop = 16;
+    return x < half - slop || x > half;
+  }
+
  private:
   std::array<Limb, kLimbs> m_{};  // m_[kLimbs - 1] most significant
   std::int64_t e_ = 0;
@@ -334,6 +353,17 @@ class FixedFloat {
     } else {
       gmp_product(p, a, b);
     }
+  }
+  // a * b rounded from its top 21 limb products where top_decides says they decide it; false else.
+  static bool top_product_into(FixedFloat& out, const FixedFloat& a, const FixedFloat& b) {
+    Limb w[7];
+    limb_product::multiply6_high(w, a.m_.data(), b.m_.data());
+    const unsigned sh = static_cast<unsigned>(1 - (w[6] >> 63));
+    Limb r[kLimbs];
+    shifted_left(r, w, sh);
+    if (!top_decides(r[0] & ((Limb{1} << kSpare) - 1))) [[unlikely]] return false;
+    // The sticky bit matters only on a tie, which top_decides has ruled out.
+    return round_into(out, r, false, a.e_ + b.e_ - static_cast<std::int64_t>(sh), a.neg_ != b.neg_);
   }
   [[gnu::noinline]] static void gmp_product(Limb (&p)[2 * kLimbs], const FixedFloat& a, const FixedFloat& b) {
     Limb w[2 * kLimbs];
@@ -383,16 +413,42 @@ class FixedFloat {
     return true;
   }
 
-  // a / u, a regular, u an integer of k bits, 1 <= k <= 32, whose limb shifted to the top is d: the exact
-  // quotient of a's limbs with a zero limb below them, taken limb by limb with d's precomputed inverse
-  // (Moeller and Granlund, "Improved division by invariant integers", 2011, algorithm 4; dividend and
-  // divisor shifted alike, which leaves the quotient), rounded with the remainder in the sticky bit.
-  // The quotient has at least 64 (kLimbs + 1) - 33 bits, more than P + 1, so the round bit lies in it,
-  // and below it the sticky bit: the quotient's lower bits and the remainder. (Where kSpare > 33, as at
-  // 334 bits, the lower bits decide it alone: a quotient by u lies at least 1/(2u) of a last place from
-  // a tie, or on it exactly when the remainder is zero, and a tie cannot be: its P + 1 bits times u
-  // would not fit in P.)
+  // a / u, a regular, u an integer of k bits, 1 <= k <= 32, whose limb shifted to the top is d. Where the
+  // assembly runs, first as a product: a's limbs times R = floor(2^447 / d), whose top decides the rounding
+  // (top_decides) wherever the quotient lies more than 13 units of x from a tie, so at 334 bits always
+  // (below: 2^49 / u >= 2^17 units at least). Else, and for u = 2^j, the exact quotient of a's limbs with a
+  // zero limb below them, taken limb by limb with d's precomputed inverse (Moeller and Granlund, "Improved
+  // division by invariant integers", 2011, algorithm 4; dividend and divisor shifted alike, which leaves the
+  // quotient), rounded with the remainder in the sticky bit. That quotient has at least 64 (kLimbs + 1) - 33
+  // bits, more than P + 1, so the round bit lies in it, and below it the sticky bit: the quotient's lower
+  // bits and the remainder. (Where kSpare > 33, as at 334 bits, the lower bits decide it alone: a quotient by
+  // u lies at least 1/(2u) of a last place from a tie, or on it exactly when the remainder is zero, and a tie
+  // cannot be: its P + 1 bits times u would not fit in P.)
   [[gnu::noinline]] static bool quotient_by_limb(FixedFloat& out, const FixedFloat& a, Limb d, int k, bool neg) {
+    if constexpr (kLimbs == 6 && kSpare >= 8) {
+      if (limb_product::kAvailable && d != Limb{1} << 63) {
+        // A 2^447 / d (a's limbs A; the quotient's significand times 2^767, in [2^766, 2^768) as a
+        // product's) lies in [A R, A R + A), A < 2^384, so in [T, T + 6 * 2^384). u = 2^j (d = 2^63)
+        // would need R = 2^384, a limb more, and takes the long division. R is kept per thread: a
+        // collision divides by 90 and by 180, which share d (45 at the top).
+        struct Reciprocal {
+          Limb d, r[7];
+        };
+        thread_local Reciprocal kept{};
+        if (kept.d != d) {
+          const Limb two_447[7] = {0, 0, 0, 0, 0, 0, Limb{1} << 63};
+          mpn_divrem_1(kept.r, 0, two_447, 7, d);  // r[6] = 0: d > 2^63
+          kept.d = d;
+        }
+        Limb w[7];
+        limb_product::multiply6_high(w, a.m_.data(), kept.r);
+        const unsigned sh = static_cast<unsigned>(1 - (w[6] >> 63));
+        Limb r[kLimbs];
+        shifted_left(r, w, sh);
+        if (top_decides(r[0] & ((Limb{1} << kSpare) - 1))) [[likely]]
+          return round_into(out, r, false, a.e_ - k + 1 - static_cast<std::int64_t>(sh), neg);
+      }
+    }
     using Wide = unsigned __int128;
     const Limb v = static_cast<Limb>(((static_cast<Wide>(~d) << 64) | ~Limb{0}) / d);
     constexpr int n = kLimbs + 2;

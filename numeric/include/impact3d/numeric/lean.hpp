@@ -120,8 +120,9 @@ Strategy<To> convert_strategy(const Strategy<From>& st, F&& f) {
   return Brach<To>{opt(b.mu_t), opt(b.mu_z)};
 }
 
+// The velocities only when wanted: else they are zeros on both sides.
 template <typename To, typename From, typename F>
-LeanSolution<To> convert_solution(const LeanSolution<From>& in, F&& f) {
+LeanSolution<To> convert_solution(const LeanSolution<From>& in, Want want, F&& f) {
   auto opt = [&](const std::optional<From>& x) { return x ? std::optional<To>(f(*x)) : std::nullopt; };
   LeanSolution<To> out;
   out.status = in.status, out.singular = in.singular, out.warnings = in.warnings;
@@ -134,6 +135,7 @@ LeanSolution<To> convert_solution(const LeanSolution<From>& in, F&& f) {
   if (a.plane) b.plane = PlaneAxes<To>{f(a.plane->c), f(a.plane->s)};
   b.plane_angle_deg = opt(a.plane_angle_deg);
   b.codes = a.codes, b.for_report = a.for_report;
+  if (want == Want::impulse) return out;
   out.P_W = convert_each<To>(in.P_W, f);
   for (int i = 0; i < 2; ++i) out.v_W[i] = convert_each<To>(in.v_W[i], f), out.w_B[i] = convert_each<To>(in.w_B[i], f);
   return out;
@@ -146,7 +148,7 @@ LeanSolution<Scalar> solve_lean_in_twin(const Scene<T>& s, const Strategy<Scalar
   const Strategy<T> twin_strategy = convert_strategy<T>(st, [](const Scalar& x) { return Twin::to(x); });
   const LeanSolution<T> r = engine == Engine::direct ? solve_lean_with<direct::DirectEngine>(s, twin_strategy, want)
                                                      : solve_lean_with<GeneratedEngine>(s, twin_strategy, want);
-  return convert_solution<Scalar>(r, [](const T& x) { return Twin::from(x); });
+  return convert_solution<Scalar>(r, want, [](const T& x) { return Twin::from(x); });
 }
 
 // The scene must outlive the call only; nothing is kept. A scalar with a lean twin (lean_twin.hpp) is
