@@ -216,9 +216,9 @@ TEST_CASE("limb_product's assembly is GMP's product, limb for limb", "[fixed_flo
 // top_decides against the rounding it stands for: wherever it says the top decides, every value the
 // whole product or quotient can take, [x, x + 13) units of x's lowest bit (limb_product.hpp's bound
 // and the reciprocal's, doubled by the normalizing shift, and T's bits under x), rounds to nearest as x
-// does, and none is a tie. Checked in
-// half units at every x within 20 of the tie, of the top and of zero, and at drawn x; and it must decide
-// x = 0 (an exact product of short operands) and almost every drawn x, else the fast path is idle.
+// does, and none is a tie. Checked in half units at every x within 20 of the tie, of the top and of
+// zero, and at drawn x; and it must decide x = 0 (an exact product of short operands) and almost every
+// drawn x, else the fast path is idle.
 TEST_CASE("A product's top decides its rounding only where the rest cannot change it", "[fixed_float]") {
   using Limb = F::Limb;
   constexpr Limb half = Limb{1} << (F::kSpare - 1), top = 2 * half;

@@ -181,7 +181,9 @@ class FixedFloat {
     FixedFloat out;
     if (a.kind_ == kRegular && b.kind_ == kRegular) {
       if constexpr (kLimbs == 6 && kSpare >= 8) {
-        if (limb_product::kAvailable && top_product_into(out, a, b)) return out;
+        if (limb_product::kAvailable &&
+            top_rounded_into(out, a.m_.data(), b.m_.data(), a.e_ + b.e_, a.neg_ != b.neg_))
+          return out;
       }
       Limb p[2 * kLimbs];
       product(p, a, b);
@@ -354,16 +356,17 @@ class FixedFloat {
       gmp_product(p, a, b);
     }
   }
-  // a * b rounded from its top 21 limb products where top_decides says they decide it; false else.
-  static bool top_product_into(FixedFloat& out, const FixedFloat& a, const FixedFloat& b) {
+  // 0.a x 0.b x 2^e, rounded from its top 21 limb products where top_decides says they decide it (a
+  // product's e the sum of its exponents; quotient_by_limb's reads its quotient so); false else.
+  static bool top_rounded_into(FixedFloat& out, const Limb* a, const Limb* b, std::int64_t e, bool neg) {
     Limb w[7];
-    limb_product::multiply6_high(w, a.m_.data(), b.m_.data());
+    limb_product::multiply6_high(w, a, b);
     const unsigned sh = static_cast<unsigned>(1 - (w[6] >> 63));
     Limb r[kLimbs];
     shifted_left(r, w, sh);
     if (!top_decides(r[0] & ((Limb{1} << kSpare) - 1))) [[unlikely]] return false;
     // The sticky bit matters only on a tie, which top_decides has ruled out.
-    return round_into(out, r, false, a.e_ + b.e_ - static_cast<std::int64_t>(sh), a.neg_ != b.neg_);
+    return round_into(out, r, false, e - static_cast<std::int64_t>(sh), neg);
   }
   [[gnu::noinline]] static void gmp_product(Limb (&p)[2 * kLimbs], const FixedFloat& a, const FixedFloat& b) {
     Limb w[2 * kLimbs];
@@ -440,13 +443,8 @@ class FixedFloat {
           mpn_divrem_1(kept.r, 0, two_447, 7, d);  // r[6] = 0: d > 2^63
           kept.d = d;
         }
-        Limb w[7];
-        limb_product::multiply6_high(w, a.m_.data(), kept.r);
-        const unsigned sh = static_cast<unsigned>(1 - (w[6] >> 63));
-        Limb r[kLimbs];
-        shifted_left(r, w, sh);
-        if (top_decides(r[0] & ((Limb{1} << kSpare) - 1))) [[likely]]
-          return round_into(out, r, false, a.e_ - k + 1 - static_cast<std::int64_t>(sh), neg);
+        // a / u = 0.A x 0.R x 2^(e_a - k + 1).
+        if (top_rounded_into(out, a.m_.data(), kept.r, a.e_ - k + 1, neg)) [[likely]] return true;
       }
     }
     using Wide = unsigned __int128;
