@@ -315,11 +315,70 @@ TEST_CASE("solve_lean allocates nothing, with or without warnings", "[lean]") {
 }
 #endif
 
-TEST_CASE("The condition bound in double is above ||M||_F ||M^-1||_F at 100 digits, and empty where it cannot bound it",
+TEMPLATE_TEST_CASE("The lean path's bounds of kappa(K) and of the amplification are above the settled values where it takes them",
+                   "[lean]", double, long double, mp::float100) {
+  // The lean path decides on kappa_bound = tr(K) and on amplification_bound while the latter is trusted
+  // (Problem::within); there each must be at least the eigenvalues' value that settle() computes, or a
+  // decision could be taken on the bound that analyze takes the other way. tr(K) exceeds kappa(K) by at
+  // least 2 in exact arithmetic (K's eigenvalues are all at least 1), so equality is not tolerated. Three
+  // families: ordinary scenes, a light body struck far out (K ill-conditioned), and a rod whose thin axis
+  // takes cond(J) from 2.5e3 to 2.5e15, across the trusted threshold at every precision but 100 digits.
+  std::mt19937_64 g(20261128);
+  int trusted = 0, untrusted = 0, tensors = 0;
+  for (int c = 0; c < 90; ++c) {
+    Scene<double> s = random_scene(g);
+    if (c % 3 == 1) {
+      s.body[1].mass *= 1e-6;
+      s.body[1].J_B *= 1e-9;
+      s.body[1].p_CgIc_B *= 40;
+    } else if (c % 3 == 2) {
+      s.body[1].J_B = Mat3<double>(Vec3<double>(2500, 2500, std::pow(10.0, -(c / 3 % 13))).asDiagonal());
+    }
+    const Scene<TestType> t = cast_scene<TestType>(s);
+    for (Engine e : kEngines) {
+      const Problem<TestType> p = e == Engine::direct ? make_problem<direct::DirectEngine>(t, true)
+                                                      : make_problem<GeneratedEngine>(t, true);
+      const bool taken = rounding::relative_bound(p.amplification_bound) <= TestType(rounding::kTrustedFraction);
+      p.settle();
+      INFO("scene " << c << ", " << engine_name(e) << ": kappa " << to_double(p.kappa) << ", bound "
+                    << to_double(p.kappa_bound) << "; amplification " << to_double(p.amplification) << ", bound "
+                    << to_double(p.amplification_bound));
+      if (!taken) {
+        ++untrusted;
+        continue;
+      }
+      ++trusted;
+      CHECK(p.kappa < p.kappa_bound);
+      CHECK(p.amplification < p.amplification_bound);
+    }
+    // The tensors' bound tr(J) tr(J^-1): at least cond(J), at most nine times it (and its rounding).
+    for (const RigidBody<TestType>& b : t.body) {
+      const TestType bound = rounding::spd_condition_bound(b.J_B), cond = rounding::spd_condition(b.J_B);
+      if (!is_finite(bound)) continue;
+      ++tensors;
+      CHECK(bound >= cond);
+      CHECK(bound <= 9 * cond * TestType(1 + 0x1p-10));
+    }
+  }
+  INFO(trusted << " trusted, " << untrusted << " not");
+  CHECK(trusted + untrusted == 90 * 2);
+  CHECK(trusted >= 60);  // the ordinary scenes at least
+  if (std::numeric_limits<TestType>::digits < 100) CHECK(untrusted >= 4);
+  CHECK(tensors >= 150);
+  // K is the identity plus a positive semidefinite part only for m' > 0: otherwise no trace bounds it.
+  Scene<double> s = random_scene(g);
+  s.body[0].mass = -1, s.body[1].mass = 3;
+  const Scene<TestType> t = cast_scene<TestType>(s);
+  const Problem<TestType> p = make_problem<GeneratedEngine>(t, true);
+  REQUIRE(p.m_prime < 0);
+  CHECK(p.kappa_bound == std::numeric_limits<TestType>::infinity());
+}
+
+TEST_CASE("The condition bound in double is above tr(M) tr(M^-1) at 100 digits, and empty where it cannot bound it",
           "[lean]") {
-  // The lean path bounds kappa(K) and cond(J) at wide precisions in double (rounding.hpp); a bound below
-  // the exact product would let a decision be taken on it that the settled kappa contradicts. The
-  // reference: the same Frobenius product by the adjugate at 100 digits, within 1e-90 of exact here.
+  // The lean path bounds cond(J) at wide precisions in double (rounding.hpp); a bound below the exact
+  // product would let a decision be taken on it that the settled kappa contradicts. The reference: the
+  // same trace product by the adjugate at 100 digits, within 1e-90 of exact here.
   using F = mp::float100;
   std::mt19937_64 g(20261127);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -333,10 +392,9 @@ TEST_CASE("The condition bound in double is above ||M||_F ||M^-1||_F at 100 digi
     M = ((M + M.transpose()) / 2).eval();
     const Mat3<F> Mf = M.cast<F>();
     const F a = Mf(0, 0), b = Mf(0, 1), c = Mf(0, 2), d = Mf(1, 1), e = Mf(1, 2), f = Mf(2, 2);
-    const F A = d * f - e * e, B = c * e - b * f, C = b * e - c * d, D = a * f - c * c, E = b * c - a * e, G = a * d - b * b;
+    const F A = d * f - e * e, B = c * e - b * f, C = b * e - c * d, D = a * f - c * c, G = a * d - b * b;
     const F det = a * A + b * B + c * C;
-    const F exact = sqrt((a * a + d * d + f * f + 2 * (b * b + c * c + e * e)) *
-                         (A * A + D * D + G * G + 2 * (B * B + C * C + E * E)) / (det * det));
+    const F exact = (a + d + f) * (A + D + G) / det;
     const std::optional<double> bound = rounding::spd_condition_bound_in_double(Mf);
     if (!bound) {
       ++refused;
@@ -373,7 +431,7 @@ TEST_CASE("The condition bound in double is above ||M||_F ||M^-1||_F at 100 digi
   CHECK(rounding::spd_condition_bound(indefinite) == std::numeric_limits<F>::infinity());
   Mat3<F> tiny = Mat3<F>::Identity() * F("1e-400");
   CHECK(!rounding::spd_condition_bound_in_double(tiny));
-  CHECK(abs(rounding::spd_condition_bound(tiny) - F(3)) < F("1e-90"));
+  CHECK(abs(rounding::spd_condition_bound(tiny) - F(9)) < F("1e-90"));  // tr(I) tr(I^-1)
   Mat3<F> nan = Mat3<F>::Identity();
   nan(1, 1) = std::numeric_limits<F>::quiet_NaN();
   CHECK(!rounding::spd_condition_bound_in_double(nan));

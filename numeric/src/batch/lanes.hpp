@@ -99,19 +99,17 @@ B norm(const V3<B>& v) {
   return xsimd::sqrt(v(0) * v(0) + v(1) * v(1) + v(2) * v(2));
 }
 
-// rounding::spd_condition_bound on lanes: ||M||_F ||M^-1||_F, infinite where Sylvester's test fails or
-// the determinant is not above 2^20 eps m^3 (m the largest entry; below that it may be rounding noise).
+// rounding::spd_condition_bound on lanes: tr(M) tr(M^-1), infinite where Sylvester's test fails or the
+// determinant is not above 2^20 eps m^3 (m the largest entry; below that it may be rounding noise).
 template <typename B>
 B spd_condition_bound(const M3<B>& M) {
-  const B a = M(0, 0), b = M(0, 1), c = M(0, 2), d = M(1, 1), e = M(1, 2), f = M(2, 2), two(2.0), zero(0.0);
+  const B a = M(0, 0), b = M(0, 1), c = M(0, 2), d = M(1, 1), e = M(1, 2), f = M(2, 2), zero(0.0);
   const B A = d * f - e * e, Bc = c * e - b * f, C = b * e - c * d;
-  const B D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
+  const B D = a * f - c * c, F = a * d - b * b;
   const B det = a * A + b * Bc + c * C;
   const B m = xsimd::max(xsimd::max(xsimd::max(xsimd::abs(a), xsimd::abs(b)), xsimd::max(xsimd::abs(c), xsimd::abs(d))),
                          xsimd::max(xsimd::abs(e), xsimd::abs(f)));
-  const B norm2 = a * a + d * d + f * f + two * (b * b + c * c + e * e);
-  const B inverse2 = (A * A + D * D + F * F + two * (Bc * Bc + C * C + E * E)) / (det * det);
-  const B k = xsimd::sqrt(norm2 * inverse2);
+  const B k = (a + d + f) * (A + D + F) / det;
   const auto spd = (a > zero) && (F > zero) && (det > B(0x1p20 * std::numeric_limits<double>::epsilon()) * m * m * m) &&
                    xsimd::isfinite(k);
   return xsimd::select(spd, k, B(std::numeric_limits<double>::infinity()));
@@ -185,7 +183,7 @@ LaneProblem<B> problem(const CollisionColumns& in, std::size_t i) {
 
   // Amplification bound (rounding.hpp): kappa(K) cond(J) max(1, (|v_IC1| + |v_IC2|) / V_rn), bounded.
   const B cond_J = xsimd::max(spd_condition_bound(b0.J), spd_condition_bound(b1.J));
-  p.kappa = spd_condition_bound(p.K);
+  p.kappa = p.K(0, 0) + p.K(1, 1) + p.K(2, 2);  // rounding::coefficient_condition_bound (m' > 0: doubt below)
   const B cancellation = xsimd::max(one, (norm(v0) + norm(v1)) / p.V(0));
   B amplification = p.kappa * cond_J * cancellation;
   amplification = xsimd::select(xsimd::isfinite(amplification) && amplification > zero, amplification, inf);

@@ -46,10 +46,12 @@ struct Problem {
   }
 
   // Whether |x| <= limit(kappa or amplification), deciding on the bound when it is far from the limit and
-  // on the settled value otherwise. ||K||_F ||K^-1||_F >= kappa holds exactly; computed, the bound and
-  // the eigenvalues' kappa each carry a relative error of a few eps kappa. The bound is therefore used
-  // only while the rounding it implies is trusted (kResultRoundings eps A_bound <= kTrustedFraction,
-  // so eps kappa <= 3e-8), and doubled, far more than those errors.
+  // on the settled value otherwise. The bounds hold of the exact matrices (rounding.hpp:
+  // coefficient_condition_bound, spd_condition_bound); computed, the bounds and the eigenvalues' kappa
+  // each carry a relative error of a few eps kappa, and K's smallest eigenvalue, which the trace bound
+  // takes as 1, K's rounding. The bound is therefore used only while the rounding it implies is trusted
+  // (kResultRoundings eps A_bound <= kTrustedFraction, so eps kappa <= 3e-8 and K's rounding is below
+  // 10^-6), and doubled, far more than those errors.
   template <typename Limit>
   bool within(const Scalar& x, Limit&& limit, bool of_kappa) const {
     using std::abs;
@@ -84,7 +86,7 @@ Problem<Scalar> make_problem(const Scene<Scalar>& s, bool bounded = false) {
     p.point_speeds = rounding::point_speeds(v_Ic0_W, v_Ic1_W);
   }
   if (bounded && !is_exact_v<Scalar>) {
-    p.kappa_bound = rounding::spd_condition_bound(p.K);
+    p.kappa_bound = rounding::coefficient_condition_bound(p.K, p.m_prime);
     p.amplification_bound = rounding::amplification_bound(s, p.point_speeds, p.V_ri.x(), p.kappa_bound);
     p.kappa = p.amplification = std::numeric_limits<Scalar>::quiet_NaN();
     p.unsettled = &s;

@@ -97,14 +97,16 @@ Mat3<Scalar> rotation_zyx_deg(const Scalar& yaw, const Scalar& pitch, const Scal
 
 // The same rotation in closed form from the sines and cosines, a third of the operations, for the lean
 // path and batches (raw_collision.hpp). Its entries equal rotation_zyx_deg's bit for bit but for the sign of some zeros
-// (the product adds zero terms that this form leaves out; tests/check_rotation.cpp).
+// (the product adds zero terms that this form leaves out; tests/check_rotation.cpp). Entry by entry, not
+// by Eigen's comma initializer, which kept GCC from inlining it into compute_scene: the call and the
+// copies cost a tenth of a lean pc-crash solve in double (BENCHMARKS.md).
 template <typename Scalar>
 Mat3<Scalar> rotation_zyx(const SinCos<Scalar>& z, const SinCos<Scalar>& y, const SinCos<Scalar>& x) {
   const Scalar zc_ys = z.c * y.s, zs_ys = z.s * y.s;
   Mat3<Scalar> r;
-  r << z.c * y.c, -z.s * x.c + zc_ys * x.s, z.s * x.s + zc_ys * x.c,  //
-      z.s * y.c, z.c * x.c + zs_ys * x.s, -z.c * x.s + zs_ys * x.c,   //
-      -y.s, y.c * x.s, y.c * x.c;
+  r(0, 0) = z.c * y.c, r(0, 1) = -z.s * x.c + zc_ys * x.s, r(0, 2) = z.s * x.s + zc_ys * x.c;
+  r(1, 0) = z.s * y.c, r(1, 1) = z.c * x.c + zs_ys * x.s, r(1, 2) = -z.c * x.s + zs_ys * x.c;
+  r(2, 0) = -y.s, r(2, 1) = y.c * x.s, r(2, 2) = y.c * x.c;
   return r;
 }
 

@@ -9,8 +9,9 @@
 // count roundings.
 //
 //   Zero          within_rounding, beyond_rounding (a ball that holds 0 is zero, undecided)
-//   Results       kResultRoundings, kTrustedFraction, spd_condition, spd_condition_bound, amplification,
-//                 amplification_bound, quotient_factor, relative_bound, agreement_bound, precision_for
+//   Results       kResultRoundings, kTrustedFraction, spd_condition, spd_condition_bound,
+//                 coefficient_condition_bound, amplification, amplification_bound, quotient_factor,
+//                 relative_bound, agreement_bound, precision_for
 //   Solves        kSolveRoundings, solve_roundoff, velocity_scale, velocity_roundoff, energy_roundoff
 //   Short sums    kArithmeticRoundings, arithmetic_roundoff, pdof_roundoff, kMomentumRoundings, momentum_roundoff
 //   Inputs        kParallelRoundings, parallel_within_rounding, kOrthonormalDigits, orthonormality_tolerance
@@ -100,32 +101,31 @@ Scalar spd_condition(const Mat3<Scalar>& M) {
   }
 }
 
-// ||M||_F ||M^-1||_F of the symmetric M with upper triangle m = (a, b, c, d, e, f), M^-1 by its adjugate;
-// empty where M fails Sylvester's test (a or the leading 2x2 minor not positive) or the computed
-// determinant is not above det_floor, below which it may be rounding noise (each caller says why its
-// floor suffices).
+// tr(M) tr(M^-1) of the symmetric M with upper triangle m = (a, b, c, d, e, f), tr(M^-1) as the trace
+// of the adjugate (the principal 2x2 minors) over the determinant; empty where M fails Sylvester's test
+// (a or the leading 2x2 minor not positive) or the computed determinant is not above det_floor, below
+// which it may be rounding noise (each caller says why its floor suffices). For M positive definite,
+// with eigenvalues l1 >= l2 >= l3 > 0, tr(M) >= l1 and tr(M^-1) = 1/l1 + 1/l2 + 1/l3 >= 1/l3: the
+// product is at least kappa = l1 / l3 and at most 9 kappa. One division and no root.
 template <typename T>
-std::optional<T> adjugate_condition(const std::array<T, 6>& m, const T& det_floor) {
-  using std::sqrt;
+std::optional<T> trace_condition(const std::array<T, 6>& m, const T& det_floor) {
   const T &a = m[0], &b = m[1], &c = m[2], &d = m[3], &e = m[4], &f = m[5];
   const T A = d * f - e * e, B = c * e - b * f, C = b * e - c * d;  // first column of the adjugate
-  const T D = a * f - c * c, E = b * c - a * e, F = a * d - b * b;
+  const T D = a * f - c * c, F = a * d - b * b;
   const T det = a * A + b * B + c * C;
   if (!(a > T(0)) || !(F > T(0)) || !(det > det_floor)) return std::nullopt;
-  const T norm2 = a * a + d * d + f * f + T(2) * (b * b + c * c + e * e);
-  const T inverse2 = (A * A + D * D + F * F + T(2) * (B * B + C * C + E * E)) / (det * det);
-  return sqrt(norm2 * inverse2);
+  return (a + d + f) * (A + D + F) / det;
 }
 
-// ||M||_F ||M^-1||_F for a multiprecision M, computed in double, where that bounds it. M's entries are
+// tr(M) tr(M^-1) for a multiprecision M, computed in double, where that bounds it. M's entries are
 // rounded to double (a perturbation within 2^-53 ||M||) and scaled by a power of two so that the largest
 // is in [1/2, 1): for a positive definite M, lambda_max is then in [1/2, 3]. The double determinant is
 // trusted only above 2^-30: its error is within about 10 u ||M||^3 < 2^-44 (u = 2^-53), so its relative
-// error is below 2^-14; lambda_mid >= sqrt(det / lambda_max) then keeps ||adj M|| = det ||M^-1|| above
-// 2^-18, so the adjugate's errors (within 4 u ||M||^2 each) are below 2^-28 of it; the product, a root
-// of the two, is within 2^-13 of the exact one, and times 1 + 2^-10 above it. The guard loses no matrix
-// the bound serves: a product at most 2^12 means kappa <= 2^12 and det >= lambda_max^3 / kappa^2 >=
-// 2^-27. Without it a nearly singular M (two eigenvalues 2^-50 of the third) rounds to a determinant of
+// error is below 2^-14; the adjugate's trace, at least lambda_max lambda_mid = det / lambda_min >=
+// det / 3 > 2^-32, carries three minors' errors (within 3 u ||M||^2 each), below 2^-17 of it; the
+// product is within 2^-13 of the exact one, and times 1 + 2^-10 above it. The guard loses no matrix the
+// bound serves: a product at most 2^12 means kappa <= 2^12 and det >= lambda_max^3 / kappa^2 >= 2^-27.
+// Without it a nearly singular M (two eigenvalues 2^-50 of the third) rounds to a determinant of
 // rounding noise that can pass for a small one. Elsewhere (an entry outside [2^-900, 2^900], M
 // indefinite or worse conditioned) empty: the scalar's own arithmetic decides. The lean path uses the
 // bound only to decide what is far from a limit, so a larger valid bound changes no result.
@@ -142,20 +142,21 @@ std::optional<double> spd_condition_bound_in_double(const Mat3<Scalar>& M) {
   int e2;
   std::frexp(big, &e2);
   for (double& x : m) x = std::ldexp(x, -e2);
-  const std::optional<double> k = adjugate_condition(m, 0x1p-30);
+  const std::optional<double> k = trace_condition(m, 0x1p-30);
   if (!k || !(*k <= 0x1p12)) return std::nullopt;
   return *k * (1 + 0x1p-10);
 }
 
-// An upper bound of spd_condition without eigenvalues, for the lean path: ||M||_F ||M^-1||_F, at least
-// lambda_max / lambda_min and at most three times it, M^-1 by its adjugate; infinity where M fails
-// Sylvester's test (a leading minor not positive), as spd_condition is where M is indefinite, and where
-// the computed determinant is not above 2^20 eps m^3 (m the largest entry): its error is within about
-// 10 eps m^3, so a smaller one may be noise (two eigenvalues far below the third, M nearly of rank one),
-// and the adjugate's product could fall far below kappa; infinity then sends every decision to the
-// computed kappa (so does an m^3 that overflows; one that underflows leaves det > 0, the test before).
-// Above the guard both errors stay below 2^-15 of the product (the argument of the double bound above,
-// with 2^20 eps m^3 in place of 2^-30). Beyond long double, in double where that bounds it (above).
+// An upper bound of spd_condition without eigenvalues, for the lean path's inertia tensors: tr(M)
+// tr(M^-1) (trace_condition), at least lambda_max / lambda_min and at most nine times it; infinity where
+// M fails Sylvester's test (a leading minor not positive), as spd_condition is where M is indefinite,
+// and where the computed determinant is not above 2^20 eps m^3 (m the largest entry): its error is within
+// about 10 eps m^3, so a smaller one may be noise (two eigenvalues far below the third, M nearly of rank
+// one), and the product could fall far below kappa; infinity then sends every decision to the computed
+// kappa (so does an m^3 that overflows; one that underflows leaves det > 0, the test before). Above the
+// guard the determinant's and the adjugate trace's errors stay below 2^-15 of them (the argument of the
+// double bound above, with 2^20 eps m^3 in place of 2^-30). Beyond long double, in double where that
+// bounds it (above).
 template <typename Scalar>
 Scalar spd_condition_bound(const Mat3<Scalar>& M) {
   if constexpr (is_exact_v<Scalar>) {
@@ -170,9 +171,30 @@ Scalar spd_condition_bound(const Mat3<Scalar>& M) {
     Scalar big = abs(m[0]);
     for (std::size_t i = 1; i < m.size(); ++i)
       if (const Scalar x = abs(m[i]); x > big) big = x;
-    const std::optional<Scalar> k = adjugate_condition<Scalar>(
+    const std::optional<Scalar> k = trace_condition<Scalar>(
         m, Scalar(0x1p20) * std::numeric_limits<Scalar>::epsilon() * big * big * big);
     return k && is_finite(*k) ? *k : std::numeric_limits<Scalar>::infinity();
+  }
+}
+
+// An upper bound of spd_condition(K) for the coefficient matrix of eq 9, for the lean path: its trace.
+// K = I + m' sum_i T_i [r_i]x^T J_i^-1 [r_i]x T_i^T is the identity plus a positive semidefinite part
+// when m' > 0 and the inertia tensors are positive definite, so lambda_min >= 1 and kappa <= lambda_max
+// <= tr(K) (at most 3 lambda_max). That is a property of the exact K of the rounded inputs; the computed
+// K's smallest eigenvalue is at least 1 - ||E||, E its rounding. The lean path takes the bound only
+// while the amplification bound, infinite unless both tensors pass spd_condition_bound's test, puts
+// kResultRoundings eps kappa_bound cond(J) within kTrustedFraction: E, some kSolveRoundings eps cond(J)
+// ||K|| (forming K), is then below 10^-6, and every use doubles the bound. Infinity where m' is not
+// positive or the trace is not finite; no division and no root, where spd_condition_bound takes both.
+template <typename Scalar>
+Scalar coefficient_condition_bound(const Mat3<Scalar>& K, const Scalar& m_prime) {
+  if constexpr (is_exact_v<Scalar>) {
+    return Scalar(1);
+  } else if constexpr (is_enclosure_v<Scalar>) {
+    return EnclosureTraits<Scalar>::spd_condition(K);
+  } else {
+    const Scalar trace = K(0, 0) + K(1, 1) + K(2, 2);
+    return m_prime > Scalar(0) && is_finite(trace) ? trace : std::numeric_limits<Scalar>::infinity();
   }
 }
 
