@@ -49,9 +49,9 @@ struct Problem {
   // on the settled value otherwise. The bounds hold of the exact matrices (rounding.hpp:
   // coefficient_condition_bound, spd_condition_bound); computed, the bounds and the eigenvalues' kappa
   // each carry a relative error of a few eps kappa, and K's smallest eigenvalue, which the trace bound
-  // takes as 1, K's rounding. The bound is therefore used only while the rounding it implies is trusted
-  // (kResultRoundings eps A_bound <= kTrustedFraction, so eps kappa <= 3e-8 and K's rounding is below
-  // 10^-6), and doubled, far more than those errors.
+  // takes as 1, carries K's rounding. The bound is therefore used only while the rounding it implies is
+  // trusted (kResultRoundings eps A_bound <= kTrustedFraction, so eps kappa <= 3e-8 and K's rounding is
+  // below 10^-6), and doubled, far more than those errors.
   template <typename Limit>
   bool within(const Scalar& x, Limit&& limit, bool of_kappa) const {
     using std::abs;

@@ -122,9 +122,10 @@ std::optional<T> trace_condition(const std::array<T, 6>& m, const T& det_floor) 
 // is in [1/2, 1): for a positive definite M, lambda_max is then in [1/2, 3]. The double determinant is
 // trusted only above 2^-30: its error is within about 10 u ||M||^3 < 2^-44 (u = 2^-53), so its relative
 // error is below 2^-14; the adjugate's trace, at least lambda_max lambda_mid = det / lambda_min >=
-// det / 3 > 2^-32, carries three minors' errors (within 3 u ||M||^2 each), below 2^-17 of it; the
-// product is within 2^-13 of the exact one, and times 1 + 2^-10 above it. The guard loses no matrix the
-// bound serves: a product at most 2^12 means kappa <= 2^12 and det >= lambda_max^3 / kappa^2 >= 2^-27.
+// det / 3 > 2^-32, carries three minors' errors (within 3 u m^2 each, m the largest entry, at most 1),
+// below 2^-17 of it; the product is within 2^-13 of the exact one, and times 1 + 2^-10 above it. The
+// guard loses no matrix the bound serves: a product at most 2^12 means kappa <= 2^12 and det >=
+// lambda_max^3 / kappa^2 >= 2^-27.
 // Without it a nearly singular M (two eigenvalues 2^-50 of the third) rounds to a determinant of
 // rounding noise that can pass for a small one. Elsewhere (an entry outside [2^-900, 2^900], M
 // indefinite or worse conditioned) empty: the scalar's own arithmetic decides. The lean path uses the
@@ -183,9 +184,10 @@ Scalar spd_condition_bound(const Mat3<Scalar>& M) {
 // <= tr(K) (at most 3 lambda_max). That is a property of the exact K of the rounded inputs; the computed
 // K's smallest eigenvalue is at least 1 - ||E||, E its rounding. The lean path takes the bound only
 // while the amplification bound, infinite unless both tensors pass spd_condition_bound's test, puts
-// kResultRoundings eps kappa_bound cond(J) within kTrustedFraction: E, some kSolveRoundings eps cond(J)
-// ||K|| (forming K), is then below 10^-6, and every use doubles the bound. Infinity where m' is not
-// positive or the trace is not finite; no division and no root, where spd_condition_bound takes both.
+// kResultRoundings eps kappa_bound times the tensors' bound (and the cancellation's factor) within
+// kTrustedFraction: E, some kSolveRoundings eps cond(J) ||K|| (forming K), is then below 10^-6, and
+// every use doubles the bound. Infinity where m' is not positive or the trace is not finite. Two
+// additions, where spd_condition_bound takes a division and some twenty products.
 template <typename Scalar>
 Scalar coefficient_condition_bound(const Mat3<Scalar>& K, const Scalar& m_prime) {
   if constexpr (is_exact_v<Scalar>) {
