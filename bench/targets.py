@@ -18,8 +18,8 @@ import sys
 BATCH_ROWS = 1_000_000
 BATCH_LIMITS = {"JSON Lines in, JSON Lines out": 10, "CSV in, CSV out": 5}
 # Memory is flat when the peak grows by less than this many bytes per row from a tenth of the rows to all
-# of them. A row kept would cost at least its input (about 400 bytes as CSV, 800 as JSON Lines); what
-# does grow is the allocator's and the peak sampling's noise, a few bytes a row at these sizes.
+# of them. A row kept would cost at least its input (about 400 bytes as CSV, 800 as JSON Lines); the
+# fourteenth session measured 3 to 10 bytes a row for JSON Lines out, under 2 for CSV (BENCHMARKS.md).
 FLAT_BYTES_PER_ROW = 16
 LEAN = "pc_crash_lean<Engine::generated, Want::impulse>"
 DIRECT = "pc_crash_lean<Engine::direct, Want::impulse>"
