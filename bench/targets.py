@@ -66,35 +66,28 @@ def main(bench_json, numpy_txt, batch_txt, tenth_txt):
     def row(what, target, value=None, met=False):
         rows.append((what, "not measured" if value is None else value, target, "met" if met else "NOT met"))
 
-    simd = min(((med[k], k) for k in med if k.startswith("pc_crash_simd/")), default=None)
-    if simd:
-        s, k = simd
-        row(f"SIMD lanes ({labels[k]}), ns a case", "<= 50", f"{s:.1f} (least {least[k]:.1f})", s <= 50)
-    else:
-        row("SIMD lanes, ns a case", "<= 50")
-    if simd and NAIVE in med:
-        r = med[NAIVE] / simd[0]
-        row("  naive C++ peer / SIMD", ">= 3x", f"{r:.2f}x (peer {med[NAIVE]:.1f} ns)", r >= 3)
-    else:
-        row("  naive C++ peer / SIMD", ">= 3x")
-    if simd and numpy:
-        r = numpy / simd[0]
-        row("  NumPy peer (best of 5) / SIMD", ">= 35x", f"{r:.2f}x (peer {numpy} ns)", r >= 35)
-    else:
-        row("  NumPy peer (best of 5) / SIMD", ">= 35x")
-    if LEAN in med:
-        row("scalar lean path, ns a case", "<= 200", f"{med[LEAN]:.1f} (least {least[LEAN]:.1f})", med[LEAN] <= 200)
-    else:
-        row("scalar lean path, ns a case", "<= 200")
-    if LEAN in med and DIRECT in med:
-        r = med[DIRECT] / med[LEAN]
-        row("direct / generated engine, lean path", ">= 3x", f"{r:.2f}x", r >= 3)
-    else:
-        row("direct / generated engine, lean path", ">= 3x")
-    if P100 in med:
-        row("100 digits, us a case", "<= 30", f"{med[P100] / 1e3:.2f} (least {least[P100] / 1e3:.2f})", med[P100] <= 30e3)
-    else:
-        row("100 digits, us a case", "<= 30")
+    def timed(what, name, limit, scale=1.0, digits=1):
+        if name in med:
+            shown = f"{med[name] / scale:.{digits}f} (least {least[name] / scale:.{digits}f})"
+            row(what, f"<= {limit:g}", shown, med[name] <= limit * scale)
+        else:
+            row(what, f"<= {limit:g}")
+
+    def ratio(what, slower, faster, at_least, note=""):
+        if slower is not None and faster is not None:
+            row(what, f">= {at_least}x", f"{slower / faster:.2f}x{note}", slower / faster >= at_least)
+        else:
+            row(what, f">= {at_least}x")
+
+    simd = min((k for k in med if k.startswith("pc_crash_simd/")), key=med.get, default=None)
+    timed(f"SIMD lanes ({labels[simd]}), ns a case" if simd else "SIMD lanes, ns a case", simd, 50)
+    simd_time = med.get(simd)
+    ratio("  naive C++ peer / SIMD", med.get(NAIVE), simd_time, 3,
+          f" (peer {med[NAIVE]:.1f} ns)" if NAIVE in med else "")
+    ratio("  NumPy peer (best of 5) / SIMD", numpy, simd_time, 35, f" (peer {numpy} ns)")
+    timed("scalar lean path, ns a case", LEAN, 200)
+    ratio("direct / generated engine, lean path", med.get(DIRECT), med.get(LEAN), 3)
+    timed("100 digits, us a case", P100, 30, scale=1e3, digits=2)
 
     n, whole = batch_runs(batch_txt)
     n_tenth, tenth = batch_runs(tenth_txt)
