@@ -63,10 +63,12 @@ Analysis<Scalar> analyze_with(const Scene<Scalar>& s, const std::vector<Strategy
   return a;
 }
 
-// Throws SolveError when the bodies do not approach or a strategy's constraints admit no impulse.
+// Throws SolveError when the bodies do not approach or a strategy's constraints admit no impulse, and
+// std::invalid_argument when an inertia tensor is not symmetric (scene.hpp).
 template <typename Scalar>
 Analysis<Scalar> analyze(const Scene<Scalar>& s, const std::vector<Strategy<Scalar>>& strategies,
                          Engine engine = Engine::generated) {
+  require_symmetric_inertia(s);
   if (engine == Engine::direct) return analyze_with<direct::DirectEngine>(s, strategies, engine);
   return analyze_with<GeneratedEngine>(s, strategies, engine);
 }

@@ -190,6 +190,7 @@ struct EnclosureTraits<Ball> {
   static Ball spd_condition(const Mat3<Ball>& M);
   static long bits() { return ball_bits; }
   static bool within(const Ball& x, const Ball& tol) { return ball_within(x, tol); }
+  static bool identical(const Ball& a, const Ball& b) { return arb_equal(a.get(), b.get()) != 0; }
 };
 
 }  // namespace impact3d

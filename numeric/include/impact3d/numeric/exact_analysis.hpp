@@ -53,9 +53,11 @@ ExactAnalysis exact_analyze_with(const Scene<rational>& s, const std::vector<Str
   return a;
 }
 
-// Throws Irrational when the scene itself is not rational, SolveError as analyze() does.
+// Throws Irrational when the scene itself is not rational, SolveError and std::invalid_argument as
+// analyze() does.
 inline ExactAnalysis exact_analyze(const Scene<rational>& s, const std::vector<Strategy<rational>>& strategies,
                                    Engine engine = Engine::generated) {
+  require_symmetric_inertia(s);
   if (engine == Engine::direct) return exact_analyze_with<direct::DirectEngine>(s, strategies);
   return exact_analyze_with<GeneratedEngine>(s, strategies);
 }

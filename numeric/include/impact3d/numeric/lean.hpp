@@ -153,9 +153,12 @@ LeanSolution<Scalar> solve_lean_in_twin(const Scene<T>& s, const Strategy<Scalar
 
 // The scene must outlive the call only; nothing is kept. A scalar with a lean twin (lean_twin.hpp) is
 // solved in the twin, whose every operation gives the scalar's value: the same solution, faster.
+// Throws std::invalid_argument when an inertia tensor is not symmetric (scene.hpp): a caller's mistake,
+// not an outcome. From raw parameters (below) the upper triangle is read, and no check is needed.
 template <typename Scalar>
 LeanSolution<Scalar> solve_lean(const Scene<Scalar>& s, const Strategy<Scalar>& st, Want want = Want::impulse,
                                 Engine engine = Engine::generated) {
+  require_symmetric_inertia(s);
   if constexpr (has_lean_twin_v<Scalar>) {
     return solve_lean_in_twin(convert_scene<lean_twin_t<Scalar>>(s, [](const Scalar& x) { return LeanTwin<Scalar>::to(x); }),
                               st, want, engine);
@@ -172,7 +175,8 @@ template <typename Scalar>
 LeanSolution<Scalar> solve_lean(const RawCollision<Scalar>& c, const Strategy<Scalar>& st, Want want = Want::impulse,
                                 Engine engine = Engine::generated) {
   if constexpr (has_lean_twin_v<Scalar>) return solve_lean_in_twin(compute_scene(twin_of(c)), st, want, engine);
-  else return solve_lean(scene_of(c), st, want, engine);
+  else if (engine == Engine::direct) return solve_lean_with<direct::DirectEngine>(scene_of(c), st, want);
+  else return solve_lean_with<GeneratedEngine>(scene_of(c), st, want);
 }
 
 }  // namespace impact3d

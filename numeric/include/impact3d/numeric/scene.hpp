@@ -3,6 +3,8 @@
 
 #include <array>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "impact3d/numeric/types.hpp"
 
@@ -11,7 +13,7 @@ namespace impact3d {
 template <typename Scalar>
 struct RigidBody {
   Scalar mass;
-  Mat3<Scalar> J_B;        // inertia tensor about the CG, body axes (H = J w)
+  Mat3<Scalar> J_B;        // inertia tensor about the CG, body axes (H = J w); symmetric (require_symmetric_inertia)
   Mat3<Scalar> R_WB;       // body -> world
   Vec3<Scalar> v_W;        // CG velocity, world axes
   Vec3<Scalar> w_B;        // angular velocity, body axes
@@ -27,5 +29,30 @@ struct Scene {
   // empty: in inverse proportion to mass (reconstruction.hpp).
   std::optional<std::array<Scalar, 2>> energy_share;
 };
+
+// Throws std::invalid_argument unless each body's J_B equals its transpose entry for entry. The
+// generated kernels and the condition bounds read the upper triangle, Cholesky and the eigen-solver the
+// lower, the energies and momenta the whole: a tensor that is not symmetric has no single meaning, and
+// each would answer a different collision. Case files (read_case) refuse such a tensor before a Scene
+// is made, and the Python module's solve_batch flags its row; analyze, exact_analyze, certified_analyze
+// and solve_lean check a Scene given to them. An enclosure's entries must be the same ball, a dual
+// number's the same value and derivatives; a NaN entry of the other types is left to the not-finite
+// warnings.
+template <typename Scalar>
+void require_symmetric_inertia(const Scene<Scalar>& s) {
+  auto same = [](const Scalar& a, const Scalar& b) {
+    if constexpr (is_enclosure_v<Scalar>) return EnclosureTraits<Scalar>::identical(a, b);
+    else if constexpr (is_dual_v<Scalar>)
+      return !(a < b) && !(b < a) && (a.derivatives().array() == b.derivatives().array()).all();
+    else return !(a < b) && !(b < a);
+  };
+  for (int i = 0; i < 2; ++i)
+    for (int r = 0; r < 3; ++r)
+      for (int c = r + 1; c < 3; ++c)
+        if (!same(s.body[i].J_B(r, c), s.body[i].J_B(c, r)))
+          throw std::invalid_argument("body[" + std::to_string(i) + "].J_B is not symmetric: entry (" + std::to_string(r) +
+                                      ", " + std::to_string(c) + ") differs from entry (" + std::to_string(c) + ", " +
+                                      std::to_string(r) + ")");
+}
 
 }  // namespace impact3d
