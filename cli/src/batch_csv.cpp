@@ -1,12 +1,13 @@
 // Case rows are read by the case reader as the JSON text of a case would be, so that a CSV case is
 // checked exactly as a case file is and its errors name the same paths: from the reader's tree built
-// straight from the cells where the JSON reader's fast route would give that tree, from the text
-// otherwise. Result rows are taken from the
-// result document `solve` prints, so that every number is the same text.
+// straight from the cells where the JSON reader's fast route would give that tree (the last row's tree
+// with its leaves written over, when the row fills the same cells), from the text otherwise. Result
+// rows are taken from the result document `solve` prints, so that every number is the same text.
 #include "batch_csv.hpp"
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cctype>
 #include <charconv>
 #include <optional>
@@ -153,7 +154,21 @@ void emit(const Node& n, const std::vector<Cell>& cells, std::string& out) {
 // and value as that reader takes them. Whatever it would hand to the checking parser, this refuses.
 class TreeBuilder {
  public:
-  explicit TreeBuilder(const std::vector<Cell>& cells) : cells_(cells) {}
+  using Leaves = std::vector<std::pair<std::size_t, JsonValue*>>;
+  // `leaves`, when given, is told where each leaf stands in `out` (RowTree).
+  TreeBuilder(const std::vector<Cell>& cells, Leaves* leaves) : cells_(cells), leaves_(leaves) {}
+
+  // The leaves of a tree built for a row that filled the same cells, written from this row's cells:
+  // the rest of the tree, and every limit value() counts, depend on which cells are filled alone.
+  static bool refresh(const std::vector<Cell>& cells, const Leaves& leaves) {
+    for (const auto& [column, v] : leaves) {
+      v->flag = false;
+      v->number = 0;
+      v->text.clear();
+      if (!leaf(cells[column], *v)) return false;
+    }
+    return true;
+  }
 
   // `out` may hold the last row's tree: its strings and vectors are written over, not made again.
   bool value(const Node& n, JsonValue& out, std::size_t depth) {
@@ -165,9 +180,15 @@ class TreeBuilder {
     std::size_t count = 0;
     bool ok = true;
     switch (n.kind) {
-      case Node::Kind::leaf: ok = leaf(cells_[n.column], out); break;
+      case Node::Kind::leaf:
+        ok = leaf(cells_[n.column], out);
+        if (leaves_) leaves_->emplace_back(n.column, &out);
+        break;
       case Node::Kind::object: {
         out.type = JsonValue::Type::object;
+        // Room for every member first: a leaf's address, once told, stays while the tree is built.
+        out.keys.reserve(n.keys.size());
+        out.items.reserve(n.keys.size());
         for (std::size_t m = 0; ok && m < n.keys.size(); ++m) {
           if (!any(n.members[m], cells_)) continue;
           const std::string& key = n.keys[m];
@@ -187,6 +208,7 @@ class TreeBuilder {
         while (size > 0 && !any(n.elements[size - 1], cells_)) --size;
         out.type = JsonValue::Type::array;
         out.keys.clear();
+        out.items.reserve(size);
         for (; ok && count < size; ++count) {
           if (count == out.items.size()) out.items.emplace_back();
           ok = value(n.elements[count], out.items[count], depth + 1);
@@ -217,7 +239,7 @@ class TreeBuilder {
     if (c.quoted || !json_number(c.text, &exponent)) {
       if (!text_ok(c.text)) return false;
       out.type = JsonValue::Type::string;
-      out.text = c.text;
+      out.text.append(c.text);  // empty: value() and refresh() clear it, and append is the shorter call
       return true;
     }
     std::string_view raw = c.text;
@@ -229,12 +251,13 @@ class TreeBuilder {
     if (r.ec != std::errc() || r.ptr != raw.data() + raw.size()) return false;
     if (raw == "-0") raw = "0", x = 0;  // an integer as nlohmann reports it (json_tree.cpp)
     out.type = JsonValue::Type::number;
-    out.text.assign(raw);
+    out.text.append(raw);
     out.number = x;
     return true;
   }
 
   const std::vector<Cell>& cells_;
+  Leaves* leaves_;
   std::size_t values_ = 0;
 };
 
@@ -249,7 +272,9 @@ std::size_t keys_bound(const Node& n) {
 // A cell of the result CSV: numbers as the document writes them, strings quoted when they must be.
 template <typename Out>  // std::string or io::JsonText
 void put_text(Out& out, std::string_view s) {
-  if (s.find_first_of(",\"\r\n") == std::string_view::npos && (s.empty() || (s.front() != ' ' && s.back() != ' '))) {
+  // A loop, not find_first_of, which calls memchr for every byte of a name or a warning.
+  const bool special = std::any_of(s.begin(), s.end(), [](char c) { return c == ',' || c == '"' || c == '\r' || c == '\n'; });
+  if (!special && (s.empty() || (s.front() != ' ' && s.back() != ' '))) {
     out += s;
     return;
   }
@@ -352,11 +377,12 @@ std::string split(std::string_view line, std::vector<Cell>& cells) {
       }
       if (i < line.size() && line[i] != ',') return fmt::format("cell {}: text after the closing quote", count);
     } else {
-      const std::size_t end = std::min(line.find(',', i), line.size());
+      std::size_t end = i;  // cells are short: a loop, not a call to memchr each
+      while (end < line.size() && line[end] != ',') ++end;
       std::size_t from = i, to = end;  // trimmed of spaces and tabs
       while (from < to && (line[from] == ' ' || line[from] == '\t')) ++from;
       while (to > from && (line[to - 1] == ' ' || line[to - 1] == '\t')) --to;
-      cell.text.assign(line.data() + from, to - from);
+      cell.text.append(line.data() + from, to - from);  // cleared above
       i = end;
     }
     if (i >= line.size()) return {};
@@ -365,6 +391,8 @@ std::string split(std::string_view line, std::vector<Cell>& cells) {
 }
 
 CaseColumns::CaseColumns(std::string_view header) {
+  static std::atomic<std::uint64_t> headers{0};
+  id_ = ++headers;
   if (header.substr(0, 3) == "\xEF\xBB\xBF") header.remove_prefix(3);  // the byte order mark spreadsheets write
   std::vector<Cell> cells;
   if (const std::string problem = split(header, cells); !problem.empty()) throw io::CaseError("header", problem);
@@ -394,19 +422,35 @@ std::string CaseColumns::case_json(std::string_view line) const {
   return out;
 }
 
-bool CaseColumns::case_tree(const std::vector<Cell>& cells, io::JsonValue& out) const {
+bool CaseColumns::case_tree(const std::vector<Cell>& cells, RowTree& out) const {
+  out.reused = false;
   // The fast reader refuses a text above the case file's size; every cell escaped at most sixfold.
   std::size_t bytes = keys_bound_;
   for (const auto& c : cells) bytes += 6 * c.text.size() + 2;
   if (bytes > io::limits::kCaseFileBytes) return false;
-  return TreeBuilder(cells).value(root_, out, 0);
+  bool same = out.built_for_ == id_ && out.filled_.size() == cells.size();
+  out.filled_.resize(cells.size());
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const char filled = cells[c].text.empty() ? 0 : 1;
+    same = same && out.filled_[c] == filled;
+    out.filled_[c] = filled;
+  }
+  if (same) {
+    out.reused = TreeBuilder::refresh(cells, out.leaves_);
+    if (!out.reused) out.built_for_ = 0;
+    return out.reused;
+  }
+  out.leaves_.clear();
+  const bool built = TreeBuilder(cells, &out.leaves_).value(root_, out.tree, 0);
+  out.built_for_ = built ? id_ : 0;
+  return built;
 }
 
 io::CaseSpec CaseColumns::case_spec(std::string_view line) const {
   thread_local std::vector<Cell> cells;
-  thread_local JsonValue tree;
+  thread_local RowTree tree;
   cells_of(line, cells);
-  if (case_tree(cells, tree)) return io::read_case_tree(tree);
+  if (case_tree(cells, tree)) return io::read_case_tree(tree.tree);
   std::string text;
   text.reserve(line.size() * 2 + 64);
   emit(root_, cells, text);

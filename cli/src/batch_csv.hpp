@@ -3,8 +3,10 @@
 // fixed set of columns, one row per strategy of each case.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "impact3d/io/case_spec.hpp"
@@ -16,6 +18,24 @@ namespace impact3d::cli::csv {
 struct Cell {
   std::string text;
   bool quoted = false;
+};
+
+// A row's tree for the case reader, kept from row to row (one per thread): a row that fills the same
+// cells as the last row read has the same tree but for its leaves, and only the leaves are written
+// over. The leaves are held by address, so it is neither copied nor moved.
+class RowTree {
+ public:
+  RowTree() = default;
+  RowTree(const RowTree&) = delete;
+  RowTree& operator=(const RowTree&) = delete;
+  io::JsonValue tree;
+  bool reused = false;  // the last case_tree wrote the leaves alone
+
+ private:
+  friend class CaseColumns;
+  std::uint64_t built_for_ = 0;  // the header (CaseColumns::id_) whose tree this is; 0: none
+  std::vector<char> filled_;     // which cells the tree was built from held text
+  std::vector<std::pair<std::size_t, io::JsonValue*>> leaves_;  // each leaf and its cell's column
 };
 
 // The cells of one line (RFC 4180, a row on one line; a trailing carriage return is dropped). Returns
@@ -35,11 +55,11 @@ class CaseColumns {
   // The row's case read as case_json's text would be read, by the shorter route where it can be taken:
   // the reader's tree built straight from the cells (case_tree). Throws io::CaseError.
   io::CaseSpec case_spec(std::string_view line) const;
-  // The tree io::parse_json_tree(case_json(line)) gives, built from the row's cells without the text.
-  // False (`out` then unspecified) for a row that parser would not take on its fast route: a limit
-  // near, a string or key that is not valid UTF-8, a literal beyond a double's range. Those rows are
-  // read from the text, so that the checking parser alone words every problem.
-  bool case_tree(const std::vector<Cell>& cells, io::JsonValue& out) const;
+  // The tree io::parse_json_tree(case_json(line)) gives, built from the row's cells without the text
+  // into out.tree. False (out.tree then unspecified) for a row that parser would not take on its fast
+  // route: a limit near, a string or key that is not valid UTF-8, a literal beyond a double's range.
+  // Those rows are read from the text, so that the checking parser alone words every problem.
+  bool case_tree(const std::vector<Cell>& cells, RowTree& out) const;
   // The row's cells, as many as the header has columns. Throws io::CaseError at "$".
   void cells_of(std::string_view line, std::vector<Cell>& cells) const;
 
@@ -53,6 +73,7 @@ class CaseColumns {
 
  private:
   Node root_;
+  std::uint64_t id_ = 0;  // one per header read: a RowTree knows whose tree it holds
   std::size_t columns_ = 0;
   std::size_t keys_bound_ = 0;  // the JSON text's bytes from keys and punctuation, at most
 };

@@ -1,8 +1,8 @@
 // libFuzzer harness: any bytes as a batch CSV (the first line its header, the others rows). A header
 // is refused or read; each row is refused or becomes JSON text, which for valid UTF-8 is valid JSON
-// within the reader's limits; where the row's tree is built from its cells (case_tree), it is the
-// tree that text reads as, and the case reader gives the same answer from both; never a crash, a hang
-// or unbounded memory.
+// within the reader's limits; where the row's tree is built from its cells (case_tree, over the last
+// row's tree as batch builds it), it is the tree that text reads as, and the case reader gives the same
+// answer from both; never a crash, a hang or unbounded memory.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -28,6 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   std::string_view rest = nl == std::string_view::npos ? std::string_view() : text.substr(nl + 1);
+  cli::csv::RowTree row;  // kept from row to row, as case_spec keeps it
   while (!rest.empty()) {
     const std::size_t end = std::min(rest.find('\n'), rest.size());
     const std::string_view line = rest.substr(0, end);
@@ -40,8 +41,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     std::vector<cli::csv::Cell> cells;
     columns->cells_of(line, cells);  // case_json took the row: the same cells
-    io::JsonValue direct;
-    const bool built = columns->case_tree(cells, direct);
+    const bool built = columns->case_tree(cells, row);
+    const io::JsonValue& direct = row.tree;
     io::JsonValue tree;
     try {
       tree = io::parse_json_tree(json);
