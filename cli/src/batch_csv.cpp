@@ -154,7 +154,7 @@ void emit(const Node& n, const std::vector<Cell>& cells, std::string& out) {
 // and value as that reader takes them. Whatever it would hand to the checking parser, this refuses.
 class TreeBuilder {
  public:
-  using Leaves = std::vector<std::pair<std::size_t, JsonValue*>>;
+  using Leaves = RowTree::Leaves;
   // `leaves`, when given, is told where each leaf stands in `out` (RowTree).
   TreeBuilder(const std::vector<Cell>& cells, Leaves* leaves) : cells_(cells), leaves_(leaves) {}
 
@@ -162,9 +162,7 @@ class TreeBuilder {
   // the rest of the tree, and every limit value() counts, depend on which cells are filled alone.
   static bool refresh(const std::vector<Cell>& cells, const Leaves& leaves) {
     for (const auto& [column, v] : leaves) {
-      v->flag = false;
-      v->number = 0;
-      v->text.clear();
+      clear_scalar(*v);
       if (!leaf(cells[column], *v)) return false;
     }
     return true;
@@ -174,9 +172,7 @@ class TreeBuilder {
   bool value(const Node& n, JsonValue& out, std::size_t depth) {
     ++values_;
     if (values_ >= io::limits::kValues || depth + 1 >= static_cast<std::size_t>(io::limits::kDepth)) return false;
-    out.flag = false;
-    out.number = 0;
-    out.text.clear();
+    clear_scalar(out);
     std::size_t count = 0;
     bool ok = true;
     switch (n.kind) {
@@ -186,7 +182,8 @@ class TreeBuilder {
         break;
       case Node::Kind::object: {
         out.type = JsonValue::Type::object;
-        // Room for every member first: a leaf's address, once told, stays while the tree is built.
+        // Room for every member first: a leaf's address, once told, stays while the tree is built. The
+        // items may outnumber the keys (an array of the last row stood here): each grows on its own.
         out.keys.reserve(n.keys.size());
         out.items.reserve(n.keys.size());
         for (std::size_t m = 0; ok && m < n.keys.size(); ++m) {
@@ -196,7 +193,8 @@ class TreeBuilder {
             ok = false;
             break;
           }
-          if (count == out.keys.size()) out.keys.emplace_back(), out.items.emplace_back();
+          if (count == out.keys.size()) out.keys.emplace_back();
+          if (count == out.items.size()) out.items.emplace_back();
           if (!io::same_key(out.keys[count], key)) out.keys[count] = key;  // mostly the last row's key
           ok = value(n.members[m], out.items[count++], depth + 1);
         }
@@ -223,6 +221,12 @@ class TreeBuilder {
 
  private:
   static constexpr std::size_t kScannedKeys = 64;  // the fast reader scans for duplicates up to this many keys
+
+  static void clear_scalar(JsonValue& v) {
+    v.flag = false;
+    v.number = 0;
+    v.text.clear();
+  }
 
   static bool text_ok(std::string_view s) {
     for (const char c : s)
@@ -423,34 +427,35 @@ std::string CaseColumns::case_json(std::string_view line) const {
 }
 
 bool CaseColumns::case_tree(const std::vector<Cell>& cells, RowTree& out) const {
-  out.reused = false;
+  out.reused_ = false;
   // The fast reader refuses a text above the case file's size; every cell escaped at most sixfold.
   std::size_t bytes = keys_bound_;
   for (const auto& c : cells) bytes += 6 * c.text.size() + 2;
   if (bytes > io::limits::kCaseFileBytes) return false;
   bool same = out.built_for_ == id_ && out.filled_.size() == cells.size();
+  out.built_for_ = 0;  // until the tree is whole again: a throw (bad_alloc) leaves nothing to reuse
   out.filled_.resize(cells.size());
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const char filled = cells[c].text.empty() ? 0 : 1;
     same = same && out.filled_[c] == filled;
     out.filled_[c] = filled;
   }
+  bool whole;
   if (same) {
-    out.reused = TreeBuilder::refresh(cells, out.leaves_);
-    if (!out.reused) out.built_for_ = 0;
-    return out.reused;
+    whole = out.reused_ = TreeBuilder::refresh(cells, out.leaves_);
+  } else {
+    out.leaves_.clear();
+    whole = TreeBuilder(cells, &out.leaves_).value(root_, out.tree_, 0);
   }
-  out.leaves_.clear();
-  const bool built = TreeBuilder(cells, &out.leaves_).value(root_, out.tree, 0);
-  out.built_for_ = built ? id_ : 0;
-  return built;
+  if (whole) out.built_for_ = id_;
+  return whole;
 }
 
 io::CaseSpec CaseColumns::case_spec(std::string_view line) const {
   thread_local std::vector<Cell> cells;
-  thread_local RowTree tree;
+  thread_local RowTree row;
   cells_of(line, cells);
-  if (case_tree(cells, tree)) return io::read_case_tree(tree.tree);
+  if (case_tree(cells, row)) return io::read_case_tree(row.tree());
   std::string text;
   text.reserve(line.size() * 2 + 64);
   emit(root_, cells, text);

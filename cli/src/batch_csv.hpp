@@ -25,17 +25,20 @@ struct Cell {
 // over. The leaves are held by address, so it is neither copied nor moved.
 class RowTree {
  public:
+  using Leaves = std::vector<std::pair<std::size_t, io::JsonValue*>>;  // each leaf and its cell's column
   RowTree() = default;
   RowTree(const RowTree&) = delete;
   RowTree& operator=(const RowTree&) = delete;
-  io::JsonValue tree;
-  bool reused = false;  // the last case_tree wrote the leaves alone
+  const io::JsonValue& tree() const { return tree_; }
+  bool reused() const { return reused_; }  // the last case_tree wrote the leaves alone
 
  private:
   friend class CaseColumns;
+  io::JsonValue tree_;
+  bool reused_ = false;
   std::uint64_t built_for_ = 0;  // the header (CaseColumns::id_) whose tree this is; 0: none
   std::vector<char> filled_;     // which cells the tree was built from held text
-  std::vector<std::pair<std::size_t, io::JsonValue*>> leaves_;  // each leaf and its cell's column
+  Leaves leaves_;
 };
 
 // The cells of one line (RFC 4180, a row on one line; a trailing carriage return is dropped). Returns
@@ -56,7 +59,7 @@ class CaseColumns {
   // the reader's tree built straight from the cells (case_tree). Throws io::CaseError.
   io::CaseSpec case_spec(std::string_view line) const;
   // The tree io::parse_json_tree(case_json(line)) gives, built from the row's cells without the text
-  // into out.tree. False (out.tree then unspecified) for a row that parser would not take on its fast
+  // into out.tree(). False (out.tree() then unspecified) for a row that parser would not take on its fast
   // route: a limit near, a string or key that is not valid UTF-8, a literal beyond a double's range.
   // Those rows are read from the text, so that the checking parser alone words every problem.
   bool case_tree(const std::vector<Cell>& cells, RowTree& out) const;

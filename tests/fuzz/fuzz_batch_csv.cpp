@@ -42,7 +42,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::vector<cli::csv::Cell> cells;
     columns->cells_of(line, cells);  // case_json took the row: the same cells
     const bool built = columns->case_tree(cells, row);
-    const io::JsonValue& direct = row.tree;
+    const io::JsonValue& direct = row.tree();
     io::JsonValue tree;
     try {
       tree = io::parse_json_tree(json);

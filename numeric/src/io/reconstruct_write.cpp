@@ -12,6 +12,7 @@
 #include "impact3d/io/reconstruct.hpp"
 #include "impact3d/io/result_json.hpp"
 #include "impact3d/io/strategy_kinds.hpp"
+#include "impact3d/numeric/problem.hpp"
 
 namespace impact3d::io {
 
@@ -131,7 +132,7 @@ std::string reconstruction_json(const Reconstruction& r) {
   JsonWriter w;
   w.begin_object();
   w.key("units").string(units_name(r.units));
-  w.key("engine").string(r.engine == Engine::direct ? "direct" : "generated");
+  w.key("engine").string(engine_name(r.engine));
   w.key("precision").string("double");
   w.key("strategy");
   write_strategy_echo(w, r.strategy);
@@ -170,7 +171,7 @@ std::string reconstruction_json(const Reconstruction& r) {
 
 std::string reconstruction_text(const Reconstruction& r) {
   std::string out = fmt::format("Reconstruction by weighted least squares: {}, {} engine, double\n", printable(strategy_label(r.strategy)),
-                                r.engine == Engine::direct ? "direct" : "generated");
+                                engine_name(r.engine));
   out += fmt::format("units: {} ({}, {}); headings in degrees\n", units_name(r.units), unit_label(r.units, "velocity"),
                      unit_label(r.units, "angular_velocity"));
   out += fit_text(r, r.best);

@@ -12,6 +12,7 @@
 #include "impact3d/io/result_json.hpp"
 #include "impact3d/io/sensitivity.hpp"
 #include "impact3d/io/strategy_kinds.hpp"
+#include "impact3d/numeric/problem.hpp"
 
 namespace impact3d::io {
 
@@ -38,7 +39,7 @@ std::string sensitivity_json(const SensitivityRun& run) {
   JsonWriter w;
   w.begin_object();
   w.key("units").string(units_name(run.units));
-  w.key("engine").string(run.engine == Engine::direct ? "direct" : "generated");
+  w.key("engine").string(engine_name(run.engine));
   w.key("precision").string("double");
   w.key("inputs").begin_object();
   for (std::size_t j = 0; j < n; ++j) put_shortest(w.key(run.inputs[j]), run.input_values[j]);
@@ -92,7 +93,7 @@ std::string sensitivity_text(const SensitivityRun& run, std::size_t top) {
   const std::size_t n = run.inputs.size();
   const auto& outputs = monte_carlo_outputs();
   std::string out = fmt::format("Sensitivities, regime held fixed: {} inputs, {} engine, double\n", n,
-                                run.engine == Engine::direct ? "direct" : "generated");
+                                engine_name(run.engine));
   out += fmt::format("units: {} ({}, {}, {}); angles in degrees\n", units_name(run.units), unit_label(run.units, "velocity"),
                      unit_label(run.units, "energy"), unit_label(run.units, "angular_velocity"));
   for (const auto& [path, why] : run.fixed) out += fmt::format("not differentiated: {}: {}\n", path, why);

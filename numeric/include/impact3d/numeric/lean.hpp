@@ -141,13 +141,19 @@ LeanSolution<To> convert_solution(const LeanSolution<From>& in, Want want, F&& f
   return out;
 }
 
+// The engine asked for at run time, chosen here alone.
+template <typename Scalar>
+LeanSolution<Scalar> solve_lean_on(Engine engine, const Scene<Scalar>& s, const Strategy<Scalar>& st, Want want) {
+  if (engine == Engine::direct) return solve_lean_with<direct::DirectEngine>(s, st, want);
+  return solve_lean_with<GeneratedEngine>(s, st, want);
+}
+
 // A scene in the twin T of Scalar (lean_twin.hpp) solved there, the solution given in Scalar.
 template <typename Scalar, typename T = lean_twin_t<Scalar>>
 LeanSolution<Scalar> solve_lean_in_twin(const Scene<T>& s, const Strategy<Scalar>& st, Want want, Engine engine) {
   using Twin = LeanTwin<Scalar>;
   const Strategy<T> twin_strategy = convert_strategy<T>(st, [](const Scalar& x) { return Twin::to(x); });
-  const LeanSolution<T> r = engine == Engine::direct ? solve_lean_with<direct::DirectEngine>(s, twin_strategy, want)
-                                                     : solve_lean_with<GeneratedEngine>(s, twin_strategy, want);
+  const LeanSolution<T> r = solve_lean_on(engine, s, twin_strategy, want);
   return convert_solution<Scalar>(r, want, [](const T& x) { return Twin::from(x); });
 }
 
@@ -163,8 +169,7 @@ LeanSolution<Scalar> solve_lean(const Scene<Scalar>& s, const Strategy<Scalar>& 
     return solve_lean_in_twin(convert_scene<lean_twin_t<Scalar>>(s, [](const Scalar& x) { return LeanTwin<Scalar>::to(x); }),
                               st, want, engine);
   } else {
-    if (engine == Engine::direct) return solve_lean_with<direct::DirectEngine>(s, st, want);
-    return solve_lean_with<GeneratedEngine>(s, st, want);
+    return solve_lean_on(engine, s, st, want);
   }
 }
 
@@ -175,8 +180,7 @@ template <typename Scalar>
 LeanSolution<Scalar> solve_lean(const RawCollision<Scalar>& c, const Strategy<Scalar>& st, Want want = Want::impulse,
                                 Engine engine = Engine::generated) {
   if constexpr (has_lean_twin_v<Scalar>) return solve_lean_in_twin(compute_scene(twin_of(c)), st, want, engine);
-  else if (engine == Engine::direct) return solve_lean_with<direct::DirectEngine>(scene_of(c), st, want);
-  else return solve_lean_with<GeneratedEngine>(scene_of(c), st, want);
+  else return solve_lean_on(engine, scene_of(c), st, want);
 }
 
 }  // namespace impact3d
