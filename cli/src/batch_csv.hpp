@@ -59,9 +59,9 @@ class CaseColumns {
   // the reader's tree built straight from the cells (case_tree). Throws io::CaseError.
   io::CaseSpec case_spec(std::string_view line) const;
   // The tree io::parse_json_tree(case_json(line)) gives, built from the row's cells without the text
-  // into out.tree(). False (out.tree() then unspecified) for a row that parser would not take on its fast
-  // route: a limit near, a string or key that is not valid UTF-8, a literal beyond a double's range.
-  // Those rows are read from the text, so that the checking parser alone words every problem.
+  // into out.tree(). False (out.tree() then unspecified) for a row that parser would not take on its
+  // fast route: a limit near, a string or key that is not valid UTF-8, a literal beyond a double's
+  // range. Those rows are read from the text, so that the checking parser alone words every problem.
   bool case_tree(const std::vector<Cell>& cells, RowTree& out) const;
   // The row's cells, as many as the header has columns. Throws io::CaseError at "$".
   void cells_of(std::string_view line, std::vector<Cell>& cells) const;
