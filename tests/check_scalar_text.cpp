@@ -158,8 +158,10 @@ TEST_CASE("the JSON writer writes non-finite numbers as null and finite ones as 
 
 // JsonWriter finds the bytes a string must escape eight at a time (json_writer.hpp, next_special); here
 // against RFC 8259's rule read a byte at a time: a control byte (below 0x20), '"' and '\' are escaped,
-// every other byte (UTF-8's high bytes included) is copied. Strings and keys of every length up to 40,
-// their bytes drawn mostly from those at the three tests' edges, so that most words hold one.
+// every other byte (UTF-8's high bytes included) is copied. Strings and keys of every length up to 56
+// (a key of up to 48 bytes is tested by whole words, plain(), and one longer as a string is), their bytes
+// drawn mostly from those at the three tests' edges, so that most words hold one; then each edge byte at
+// every place of a key of letters of every length up to 56.
 TEST_CASE("the JSON writer escapes exactly the bytes JSON requires, in strings and in keys", "[io]") {
   using impact3d::io::JsonWriter;
   auto by_byte = [](const std::string& s) {
@@ -174,14 +176,8 @@ TEST_CASE("the JSON writer escapes exactly the bytes JSON requires, in strings a
     }
     return q + "\"";
   };
-  const unsigned char edges[] = {0x00, 0x01, 0x0a, 0x1f, 0x20, 0x21, 0x22, 0x23, 0x5b, 0x5c, 0x5d, 0x7f, 0x80, 0xa2, 0xdc, 0xff};
-  std::mt19937_64 g(17);
-  int compared = 0, escaped = 0;
-  for (int n = 0; n < 40000; ++n) {
-    std::string s(g() % 41, ' ');
-    const bool rare = g() % 4 == 0;  // one edge byte at most, elsewhere letters: the first hit's position
-    for (auto& ch : s) ch = static_cast<char>(rare ? 'a' + g() % 26 : edges[g() % std::size(edges)]);
-    if (rare && !s.empty()) s[g() % s.size()] = static_cast<char>(edges[g() % std::size(edges)]);
+  // As a string and as a key after another; true when the string needed no escape.
+  auto written_as_json_says = [&](const std::string& s) {
     const std::string want = by_byte(s);
     CHECK(JsonWriter::quote(s) == want);
     JsonWriter w(true);
@@ -190,11 +186,32 @@ TEST_CASE("the JSON writer escapes exactly the bytes JSON requires, in strings a
     w.key(s).null();
     w.end_object();
     CHECK(std::move(w).str() == "{\"a\": null, " + want + ": null}\n");
+    return want.size() == s.size() + 2;
+  };
+  const unsigned char edges[] = {0x00, 0x01, 0x0a, 0x1f, 0x20, 0x21, 0x22, 0x23, 0x5b, 0x5c, 0x5d, 0x7f, 0x80, 0xa2, 0xdc, 0xff};
+  std::mt19937_64 g(17);
+  int compared = 0, escaped = 0;
+  for (int n = 0; n < 40000; ++n) {
+    std::string s(g() % 57, ' ');
+    const bool rare = g() % 4 == 0;  // one edge byte at most, elsewhere letters: the first hit's position
+    for (auto& ch : s) ch = static_cast<char>(rare ? 'a' + g() % 26 : edges[g() % std::size(edges)]);
+    if (rare && !s.empty()) s[g() % s.size()] = static_cast<char>(edges[g() % std::size(edges)]);
+    escaped += !written_as_json_says(s);
     ++compared;
-    escaped += want.size() != s.size() + 2;
   }
   CHECK(compared == 40000);
   CHECK(escaped > 20000);
+  // And every key of letters up to 56 long with one edge byte, at every place.
+  int placed = 0;
+  for (std::size_t n = 1; n <= 56; ++n)
+    for (std::size_t at = 0; at < n; ++at)
+      for (const unsigned char edge : edges) {
+        std::string s(n, 'k');
+        s[at] = static_cast<char>(edge);
+        written_as_json_says(s);
+        ++placed;
+      }
+  CHECK(placed == 16 * 56 * 57 / 2);
 }
 
 // JsonText copies short pieces by overlapping fixed-width moves (json_text.hpp): here every length up to
