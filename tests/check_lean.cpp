@@ -187,6 +187,7 @@ TEMPLATE_TEST_CASE("solve_lean decides as analyze does on both sides of the unde
   std::mt19937_64 g(20261122);
   const TestType eps = std::numeric_limits<TestType>::epsilon();
   int compared = 0, scenes = 0, straddled = 0, undecided = 0, decided = 0;
+  std::string one_sided;  // the scenes the sweep did not take across the band, for the failure's message
   for (int c = 0; c < 40; ++c) {
     Scene<double> s = random_scene(g);
     if (c % 2) {
@@ -212,9 +213,13 @@ TEMPLATE_TEST_CASE("solve_lean decides as analyze does on both sides of the unde
             (has_warning(solve_lean(t, st, Want::impulse, e).warnings, WarningCode::undecided) ? undecided : decided)++;
           }
       }
-    straddled += undecided > undecided_before && decided > decided_before;
+    const bool both = undecided > undecided_before && decided > decided_before;
+    straddled += both;
+    if (!both)
+      one_sided += "scene " + std::to_string(c) + ": " + std::to_string(undecided - undecided_before) +
+                   " undecided, " + std::to_string(decided - decided_before) + " decided; ";
   }
-  INFO(scenes << " scenes, " << undecided << " undecided, " << decided << " decided");
+  INFO(scenes << " scenes, " << undecided << " undecided, " << decided << " decided; " << one_sided);
   CHECK(scenes >= 30);
   CHECK(compared == scenes * 2 * 21 * 2 * 2);
   CHECK(straddled == scenes);  // on every scene the sweep reaches into the band and out of it

@@ -16,6 +16,7 @@ TEST_CASE("Wach with no initial sliding warns and uses the t axis", "[wach]") {
   const V3 V = relative_velocity_C(s);
   s.body[1].v_W -= s.R_WC * V3(0, V.y(), V.z());
   const auto sol = solve_one(s, Wach<double>{0.3, WachLimit::cir});
+  for (const auto& w : sol.impulse.warnings) UNSCOPED_INFO(w.text);
   REQUIRE(sol.impulse.warnings.size() == 1);
   CHECK(sol.impulse.warnings[0].code == WarningCode::plane_undefined);
   CHECK(*sol.impulse.plane_angle_deg == 0.0);  // the fallback, exactly
