@@ -433,8 +433,10 @@ TEST_CASE("FixedFloat's floor is mpfr_floor's at every place of the binary point
 
 TEST_CASE("FixedFloat's exact zeros carry Boost's signs whatever the operands' value categories", "[fixed_float]") {
   // Boost's numbers without expression templates subtract a temporary on the right in place, as
-  // -(b - a): an exact zero comes out -0 where a fresh difference gives +0. The expression shapes the
-  // kernels use, at values that cancel exactly, and hypot at zeros and NaN.
+  // -(b - a), when GCC compiles them (under clang they have no overloads for temporaries), and a number
+  // from a built-in one so too but for an integer a >= 0: an exact zero comes out -0 where a fresh
+  // difference gives +0 (fixed_float.hpp). The expression shapes the kernels use and every built-in
+  // shape, at values that cancel exactly, and hypot at zeros and NaN; CI runs it under GCC and clang.
   const double values[] = {0.0, -0.0, 1.0, -1.0, 0.375, 3.0};
   int checked = 0;
   for (const double x : values)
@@ -448,6 +450,12 @@ TEST_CASE("FixedFloat's exact zeros carry Boost's signs whatever the operands' v
         REQUIRE(same_as_boost(a - b, ba - bb));
         REQUIRE(same_as_boost(1 - a * b, 1 - ba * bb));  // a built-in number and a temporary
         REQUIRE(same_as_boost(1.0 - a, 1.0 - ba));
+        REQUIRE(same_as_boost(1 - a, 1 - ba));  // an integer >= 0: mpfr_ui_sub, a plain difference
+        REQUIRE(same_as_boost(-1 - a, -1 - ba));
+        REQUIRE(same_as_boost(3u - a, 3u - ba));
+        REQUIRE(same_as_boost(3u - a * b, 3u - ba * bb));
+        REQUIRE(same_as_boost(-1 - a * b, -1 - ba * bb));
+        REQUIRE(same_as_boost(1.0 - a * b, 1.0 - ba * bb));
         REQUIRE(same_as_boost(a * b - 1, ba * bb - 1));
         REQUIRE(same_as_boost(a - y, ba - y));
         REQUIRE(same_as_boost(a + b * c, ba + bb * bc));
