@@ -475,9 +475,10 @@ TEST_CASE("batch answers a case piped in before the next arrives", "[batch]") {
   fs::remove_all(dir);
 }
 
-// The CSV cells are taken as the document is written (io/json_pick.hpp), not read back from it: a name
-// with every character JSON escapes, each strategy of the offset frontal case (one with a warning, one
-// with a limit choice), at double and exact. Every cell against the JSON Lines document of the same row.
+// The CSV cells are written from the analysis at double and taken as the document is written at exact
+// (io/result_csv.hpp), never read back from it: a name with every character JSON escapes, each strategy
+// of the offset frontal case (one with a warning, one with a limit choice). Every cell against the JSON
+// Lines document of the same row.
 TEST_CASE("batch's CSV cells are the JSON document's values, escapes, strategies and warnings included", "[batch]") {
   const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-pick-{}", ::getpid());
   fs::create_directories(dir);

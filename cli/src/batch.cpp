@@ -39,6 +39,7 @@
 #include "impact3d/io/limits.hpp"
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/io/render.hpp"
+#include "impact3d/io/result_csv.hpp"
 #include "impact3d/io/strategy_option.hpp"
 #include "batch_csv.hpp"
 #include "helper_thread.hpp"
@@ -187,7 +188,7 @@ struct Formats {
 };
 
 std::string rejected_row(long line, const std::string& problem, const Formats& f) {
-  return f.csv_out ? csv::error_row(line, problem) : error_record(line, problem);
+  return f.csv_out ? io::result_csv_error(line, problem) : error_record(line, problem);
 }
 
 // The result document as the output wants it: one JSON line with "line" first, or CSV rows.
@@ -196,12 +197,9 @@ Solved answer(const io::CaseSpec& spec, const BatchOptions& o, long line, const 
   ro.format = "jsonl";
   ro.engine = o.engine;
   if (!f.csv_out) return with_line(io::render(spec, o.precision, ro), line);
-  // The cells are the document's text, taken as it is written; the rest of the document is not written.
-  thread_local io::JsonPick pick = csv::result_pick();
-  pick.clear();
-  ro.pick = &pick;
-  const std::string doc = io::render(spec, o.precision, ro);
-  return {csv::result_rows(doc, pick, line), true};
+  ro.format = "csv";
+  ro.line = line;
+  return {io::render(spec, o.precision, ro), true};
 }
 
 Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::StrategySpec>& strategies, const Formats& f) {
@@ -356,7 +354,7 @@ int batch(const BatchOptions& o) {
       formats.columns = &*columns;
     }
   }
-  if (formats.csv_out && !write_all(out, csv::result_header())) output_lost = true;
+  if (formats.csv_out && !write_all(out, io::result_csv_header())) output_lost = true;
   // Not over rows being written to the same terminal.
   Progress progress(::isatty(STDERR_FILENO) == 1 && ::isatty(out) != 1, total);
   long read = 0, solved = 0, rejected = 0;

@@ -2,15 +2,13 @@
 // checked exactly as a case file is and its errors name the same paths: from the reader's tree built
 // straight from the cells where the JSON reader's fast route would give that tree (the last row's tree
 // with its leaves written over, when the row fills the same cells), from the text otherwise. Result
-// rows are taken from the result document `solve` prints, so that every number is the same text.
+// rows are written by io/result_csv.hpp.
 #include "batch_csv.hpp"
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cctype>
 #include <charconv>
-#include <optional>
 
 #include <fmt/format.h>
 
@@ -18,7 +16,6 @@
 #include "impact3d/io/decimal.hpp"
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/json_path.hpp"
-#include "impact3d/io/json_text.hpp"
 #include "impact3d/io/json_writer.hpp"
 #include "impact3d/io/limits.hpp"
 
@@ -273,77 +270,6 @@ std::size_t keys_bound(const Node& n) {
   return bytes;
 }
 
-// A cell of the result CSV: numbers as the document writes them, strings quoted when they must be.
-template <typename Out>  // std::string or io::JsonText
-void put_text(Out& out, std::string_view s) {
-  // A loop, not find_first_of, which calls memchr for every byte of a name or a warning.
-  const bool special = std::any_of(s.begin(), s.end(), [](char c) { return c == ',' || c == '"' || c == '\r' || c == '\n'; });
-  if (!special && (s.empty() || (s.front() != ' ' && s.back() != ' '))) {
-    out += s;
-    return;
-  }
-  out += '"';
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  out += '"';
-}
-
-// The columns of a result row: a path in the result, or in the whole document for those marked.
-struct ResultColumn {
-  std::string name;
-  io::JsonPath path;
-  bool of_document = false;
-};
-
-const std::vector<ResultColumn>& result_columns() {
-  static const std::vector<ResultColumn> columns = [] {
-    std::vector<std::string> names = {"impulse_ratio.mu", "impulse_ratio.mu_t", "impulse_ratio.mu_z", "limits.gir", "limits.cir",
-                                      "limits.mu_t_critical", "limits.mu_z_critical", "plane_angle_deg"};
-    auto vec = [&](const std::string& p) {
-      for (int i = 0; i < 3; ++i) names.push_back(p + "[" + std::to_string(i) + "]");
-    };
-    vec("impulse.contact");
-    vec("impulse.world");
-    vec("relative_velocity.before");
-    vec("relative_velocity.after");
-    for (const char* s : {"sliding.before", "sliding.after", "sliding.swerve_angle_deg", "sliding.swerve_speed",
-                          "impulse_space.restitution_effective", "impulse_space.t_sliding", "impulse_space.z_sliding",
-                          "impulse_space.volume"})
-      names.emplace_back(s);
-    for (int v = 0; v < 2; ++v) {
-      const std::string p = "vehicles[" + std::to_string(v) + "].";
-      vec(p + "velocity");
-      vec(p + "angular_velocity");
-      vec(p + "delta_v");
-      for (const char* s : {"delta_v_magnitude", "pdof_deg", "pdof_clock"}) names.push_back(p + s);
-    }
-    for (const char* s : {"energy.before", "energy.after", "energy.loss", "rounding_bound"}) names.emplace_back(s);
-    std::vector<ResultColumn> out;
-    for (const char* s : {"name", "units", "precision", "engine"}) out.push_back({s, io::parse_json_path(s, s), true});
-    for (const auto& n : names) out.push_back({n, io::parse_json_path(n, n), false});
-    return out;
-  }();
-  return columns;
-}
-
-// The strategy as --strategy writes it: name:key=value,...
-std::string strategy_text(const JsonValue* s) {
-  if (!s || !s->is(JsonValue::Type::object)) return {};
-  std::string text, params;
-  for (std::size_t i = 0; i < s->keys.size(); ++i) {
-    const JsonValue& v = s->items[i];
-    if (s->keys[i] == "name") {
-      text = v.text;
-      continue;
-    }
-    params += params.empty() ? "" : ",";
-    params += s->keys[i] + "=" + v.text;
-  }
-  return params.empty() ? text : text + ":" + params;
-}
-
 }  // namespace
 
 std::string split(std::string_view line, std::vector<Cell>& cells) {
@@ -460,124 +386,6 @@ io::CaseSpec CaseColumns::case_spec(std::string_view line) const {
   text.reserve(line.size() * 2 + 64);
   emit(root_, cells, text);
   return io::read_case(text);
-}
-
-std::string result_header() {
-  std::string out = "line,result,error";
-  for (const auto& c : result_columns())
-    if (c.of_document) out += ',' + c.name;
-  out += ",strategy,regime";
-  for (const auto& c : result_columns())
-    if (!c.of_document) out += ',' + c.name;
-  out += ",warnings\n";
-  return out;
-}
-
-io::JsonPick result_pick() {
-  // Column c of the pick is result_columns()[c]; then each result's strategy, regime and warnings.
-  std::vector<io::JsonPath> paths;
-  auto in_results = [](const io::JsonPath& path) {
-    io::JsonPath out = {io::PathStep::of_key("results"), io::PathStep::any_index()};
-    out.insert(out.end(), path.begin(), path.end());
-    return out;
-  };
-  for (const auto& c : result_columns()) paths.push_back(c.of_document ? c.path : in_results(c.path));
-  for (const char* key : {"strategy", "regime", "warnings"}) paths.push_back(in_results({io::PathStep::of_key(key)}));
-  return io::JsonPick(paths, true);
-}
-
-std::string result_rows(std::string_view document, const io::JsonPick& pick, long line) {
-  const std::vector<ResultColumn>& cols = result_columns();
-  const std::size_t columns = cols.size(), strategy = columns, regime = columns + 1, warnings = columns + 2,
-                    width = columns + 3;
-  auto of_document = [&](std::size_t column) { return column < columns && cols[column].of_document; };
-  // The span of each (result, column): the document's columns sit in every result's row.
-  std::size_t results = 0;
-  for (const auto& s : pick.spans())
-    if (!of_document(s.column)) results = std::max(results, s.group + 1);
-  constexpr std::size_t kMissing = ~std::size_t{0};
-  thread_local std::vector<std::size_t> at;  // kept from row to row: no allocation once warm
-  at.assign(results * width, kMissing);
-  const auto& spans = pick.spans();
-  for (std::size_t i = 0; i < spans.size(); ++i) {
-    const auto& s = spans[i];
-    if (!of_document(s.column)) at[s.group * width + s.column] = i;
-    else
-      for (std::size_t k = 0; k < results; ++k) at[k * width + s.column] = i;
-  }
-  io::JsonText out;  // short cells copied without a call each (json_text.hpp)
-  out.reserve(1024 * std::max<std::size_t>(results, 1));
-  auto text_of = [&](std::size_t k, std::size_t column) -> std::optional<std::string_view> {
-    const std::size_t i = at[k * width + column];
-    if (i == kMissing) return std::nullopt;
-    return document.substr(spans[i].begin, spans[i].end - spans[i].begin);
-  };
-  // A cell as the document has it: a string as the writer was given it, a number or literal as written
-  // (null: an empty cell).
-  auto cell = [&](std::size_t k, std::size_t column) {
-    const auto text = text_of(k, column);
-    if (!text) return;
-    const std::size_t i = at[k * width + column];
-    if (spans[i].string != io::JsonPick::kNoString) put_text(out, pick.string(spans[i]));
-    else if (*text != "null") out += *text;
-  };
-  // The strategy and the warnings are a container each: short, read as JSON.
-  JsonValue scratch;
-  auto container = [&](std::string_view text) -> const JsonValue& {
-    if (!io::parse_json_tree_fast(text, scratch, true))
-      throw std::runtime_error("the result document's value does not read back");
-    return scratch;
-  };
-  // Rows of one run mostly share their strategies: the last few cells are kept by the text they came from.
-  struct Kept {
-    std::string text, cell;
-  };
-  thread_local std::array<Kept, 4> kept;
-  thread_local std::size_t next_kept = 0;
-  auto strategy_cell = [&](std::string_view text) {
-    for (const auto& c : kept)
-      if (!c.text.empty() && c.text == text) return out += c.cell, void();
-    std::string cell;  // kept only once made: a throw leaves the slots as they were
-    put_text(cell, strategy_text(&container(text)));
-    out += cell;
-    Kept& c = kept[next_kept++ % kept.size()];
-    c.text = text;
-    c.cell = std::move(cell);
-  };
-  for (std::size_t k = 0; k < results; ++k) {
-    constexpr std::size_t kDigits = 24;  // a long or a size_t in decimal, with room to spare
-    char* p = out.room(2 * kDigits + 2);
-    p = std::to_chars(p, p + kDigits, line).ptr;
-    *p++ = ',';
-    p = std::to_chars(p, p + kDigits, k).ptr;
-    *p++ = ',';
-    out.commit(p);
-    for (std::size_t c = 0; c < columns; ++c)
-      if (cols[c].of_document) out += ',', cell(k, c);
-    out += ',';
-    if (const auto text = text_of(k, strategy)) strategy_cell(*text);
-    out += ',';
-    cell(k, regime);
-    for (std::size_t c = 0; c < columns; ++c)
-      if (!cols[c].of_document) out += ',', cell(k, c);
-    out += ',';
-    if (const auto text = text_of(k, warnings); text && *text != "[]") {
-      std::string joined;
-      if (const JsonValue& w = container(*text); w.is(JsonValue::Type::array))
-        for (const auto& item : w.items) joined += (joined.empty() ? "" : " | ") + item.text;
-      put_text(out, joined);
-    }
-    out += '\n';
-  }
-  return std::move(out).take();
-}
-
-std::string error_row(long line, const std::string& problem) {
-  std::string out = fmt::format("{},,", line);
-  put_text(out, io::printable(problem));
-  out.append(result_columns().size() + 3, ',');  // the document's and the result's columns, strategy, regime, warnings
-  out += '\n';
-  return out;
 }
 
 }  // namespace impact3d::cli::csv

@@ -1,6 +1,5 @@
-// `impact3d batch --input-format csv` and `--format csv` (README, "batch CSV"): a case per CSV row whose
-// header names each column by the JSON path of the case field it fills, and a result per CSV row with a
-// fixed set of columns, one row per strategy of each case.
+// `impact3d batch --input-format csv` (README, "batch CSV"): a case per CSV row whose header names each
+// column by the JSON path of the case field it fills. The result CSV is io/result_csv.hpp's.
 #pragma once
 
 #include <cstdint>
@@ -10,7 +9,6 @@
 #include <vector>
 
 #include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/json_pick.hpp"
 #include "impact3d/io/json_tree.hpp"
 
 namespace impact3d::cli::csv {
@@ -80,15 +78,5 @@ class CaseColumns {
   std::size_t columns_ = 0;
   std::size_t keys_bound_ = 0;  // the JSON text's bytes from keys and punctuation, at most
 };
-
-// The result CSV: its header line, and the lines of one case (one per result of its document, `line`
-// first), or of a case that was rejected.
-std::string result_header();
-// What result_rows takes from each result document, picked as the document is written (RenderOptions);
-// only the picked values are written, each as it would read in the whole document.
-io::JsonPick result_pick();
-// The lines of one case, from the writer's text and what `pick` recorded while it was written.
-std::string result_rows(std::string_view document, const io::JsonPick& pick, long line);
-std::string error_row(long line, const std::string& problem);
 
 }  // namespace impact3d::cli::csv

@@ -6,6 +6,7 @@
 #include "impact3d/io/render.hpp"
 #include "impact3d/io/report_html.hpp"
 #include "impact3d/io/report_text.hpp"
+#include "impact3d/io/result_csv.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
 namespace impact3d::io {
@@ -31,6 +32,7 @@ std::string render(const CaseSpec& spec, const RenderOptions& o) {
     in_units.units = *o.units;
     shown = &in_units;
   }
+  if (o.format == "csv") return result_csv_rows(*shown, a, precision, o.line);
   if (o.format == "json" || o.format == "jsonl") return result_json(*shown, a, precision, 0, false, {}, o.format == "jsonl", o.pick);
   const int digits = o.digits > 0 ? o.digits : std::numeric_limits<Scalar>::digits10;
   if (o.format == "html") return report_html(*shown, a, precision, digits, o.figures ? *o.figures : std::vector<ReportFigure>{}, o.figures_note);

@@ -7,6 +7,7 @@
 #include "render_exact.hpp"
 
 #include "impact3d/io/render.hpp"
+#include "impact3d/io/result_csv.hpp"
 #include "impact3d/numeric/scalars.hpp"
 
 namespace impact3d::io {
@@ -45,6 +46,17 @@ std::string render(const CaseSpec& spec, std::string_view precision, const Rende
   if (o.format == "html" && precision == "exact")
     throw CaseError("--precision", "the HTML report is written at a floating precision; exact results: impact3d solve --precision exact");
 #if IMPACT3D_MULTIPRECISION
+  if (o.format == "csv" && (precision == "exact" || certified_bits(precision))) {
+    // Their documents hold a value's fractions or enclosure beside it: the cells are taken from the
+    // document as it is written.
+    thread_local JsonPick pick = result_csv_pick();  // kept from case to case: no allocation once warm
+    pick.clear();
+    RenderOptions as_json = o;
+    as_json.format = "jsonl";
+    as_json.pick = &pick;
+    const std::string document = render(spec, precision, as_json);
+    return result_csv_from_document(document, pick, o.line);
+  }
   if (precision == "exact") return render_exact(spec, o);
   if (const auto bits = certified_bits(precision)) return render_certified(spec, *bits, o);
 #endif

@@ -15,7 +15,7 @@
 namespace impact3d::io {
 
 struct RenderOptions {
-  std::string format = "text";  // "text" | "json" | "jsonl" (the JSON document on one line) | "html"
+  std::string format = "text";  // "text" | "json" | "jsonl" (the JSON document on one line) | "html" | "csv"
   int digits = 0;               // text report; 0 = the precision's digits10
   Engine engine = Engine::generated;
   JsonPick* pick = nullptr;  // json, jsonl: where the values it names are written (json_pick.hpp)
@@ -23,6 +23,7 @@ struct RenderOptions {
   std::optional<Units> units;  // the unit system written; empty: the case's
   const std::vector<ReportFigure>* figures = nullptr;  // html: the figures placed on the page
   std::string figures_note;                            // html: said above them (e.g. why there are none)
+  long line = 0;  // csv: the input line each row starts with (result_csv.hpp)
 };
 
 // Throws CaseError for inputs that fail the arithmetic checks, SolveError for no solution.

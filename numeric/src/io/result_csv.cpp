@@ -1,0 +1,169 @@
+// The result CSV's header, its rejected rows, and its rows taken from a result document's text.
+#include "impact3d/io/result_csv.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "impact3d/io/escape.hpp"
+#include "impact3d/io/json_path.hpp"
+#include "impact3d/io/json_tree.hpp"
+
+namespace impact3d::io {
+namespace {
+
+// Each column's name, as result_csv_cells gives them.
+struct Names {
+  std::vector<std::string> names;
+  template <typename... Ignored>
+  void number(const char* name, const Ignored&...) { names.emplace_back(name); }
+  template <typename... Ignored>
+  void count(const char* name, const Ignored&...) { names.emplace_back(name); }
+  template <typename... Ignored>
+  void text(const char* name, const Ignored&...) { names.emplace_back(name); }
+  template <typename... Ignored>
+  void bound(const char* name, const Ignored&...) { names.emplace_back(name); }
+  template <typename... Ignored>
+  void vec(const char* name, const Ignored&...) {
+    for (int i = 0; i < 3; ++i) names.push_back(fmt::format("{}[{}]", name, i));
+  }
+};
+
+constexpr std::array<const char*, 4> kDocumentColumns = {"name", "units", "precision", "engine"};
+
+// The strategy as --strategy writes it, from the document's strategy object.
+std::string strategy_text(const JsonValue* s) {
+  if (!s || !s->is(JsonValue::Type::object)) return {};
+  std::string text, params;
+  for (std::size_t i = 0; i < s->keys.size(); ++i) {
+    const JsonValue& v = s->items[i];
+    if (s->keys[i] == "name") {
+      text = v.text;
+      continue;
+    }
+    params += params.empty() ? "" : ",";
+    params += s->keys[i] + "=" + v.text;
+  }
+  return params.empty() ? text : text + ":" + params;
+}
+
+}  // namespace
+
+const std::vector<std::string>& result_csv_column_names() {
+  static const std::vector<std::string> names = [] {
+    Names n;
+    const Solution<double> any{};
+    result_csv_cells(n, any, Present<double>(Units::SI, 17));
+    return std::move(n.names);
+  }();
+  return names;
+}
+
+std::string result_csv_header() {
+  std::string out = "line,result,error";
+  for (const char* c : kDocumentColumns) out += std::string(",") + c;
+  out += ",strategy,regime";
+  for (const auto& c : result_csv_column_names()) out += ',' + c;
+  out += ",warnings\n";
+  return out;
+}
+
+std::string result_csv_error(long line, const std::string& problem) {
+  std::string out = fmt::format("{},,", line);
+  put_csv_text(out, printable(problem));
+  out.append(kDocumentColumns.size() + 2 + result_csv_column_names().size() + 1, ',');  // ... strategy, regime, ..., warnings
+  out += '\n';
+  return out;
+}
+
+std::string strategy_cell_text(const StrategySpec& s) {
+  // As write_strategy_echo writes the strategy, and strategy_text reads it back.
+  const KindRow row = strategy_kind(s.kind);
+  std::string text(row.name), params;
+  for (const auto& p : row.parameters) {
+    params += params.empty() ? "" : ",";
+    params += p.key;
+    params += '=';
+    if (p.type == ParameterType::choice) params += s.choice(p.key);
+    else if (const auto& n = s.number(p.key)) params += n->text;
+    else params += "critical";
+  }
+  return params.empty() ? text : text + ":" + params;
+}
+
+JsonPick result_csv_pick() {
+  // Column c of the pick: the document's columns, result_csv_cells' columns, then each result's
+  // strategy, regime and warnings.
+  std::vector<JsonPath> paths;
+  auto in_results = [](const JsonPath& path) {
+    JsonPath out = {PathStep::of_key("results"), PathStep::any_index()};
+    out.insert(out.end(), path.begin(), path.end());
+    return out;
+  };
+  for (const char* c : kDocumentColumns) paths.push_back(parse_json_path(c, c));
+  for (const auto& n : result_csv_column_names()) paths.push_back(in_results(parse_json_path(n, n)));
+  for (const char* key : {"strategy", "regime", "warnings"}) paths.push_back(in_results({PathStep::of_key(key)}));
+  return JsonPick(paths, true);
+}
+
+std::string result_csv_from_document(std::string_view document, const JsonPick& pick, long line) {
+  const std::size_t documents = kDocumentColumns.size(), columns = documents + result_csv_column_names().size();
+  const std::size_t strategy = columns, regime = columns + 1, warnings = columns + 2, width = columns + 3;
+  auto of_document = [&](std::size_t column) { return column < documents; };
+  // The span of each (result, column): the document's columns sit in every result's row.
+  std::size_t results = 0;
+  for (const auto& s : pick.spans())
+    if (!of_document(s.column)) results = std::max(results, s.group + 1);
+  constexpr std::size_t kMissing = ~std::size_t{0};
+  thread_local std::vector<std::size_t> at;  // kept from row to row: no allocation once warm
+  at.assign(results * width, kMissing);
+  const auto& spans = pick.spans();
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    const auto& s = spans[i];
+    if (!of_document(s.column)) at[s.group * width + s.column] = i;
+    else
+      for (std::size_t k = 0; k < results; ++k) at[k * width + s.column] = i;
+  }
+  JsonText out;
+  out.reserve(1024 * std::max<std::size_t>(results, 1));
+  auto text_of = [&](std::size_t k, std::size_t column) -> std::optional<std::string_view> {
+    const std::size_t i = at[k * width + column];
+    if (i == kMissing) return std::nullopt;
+    return document.substr(spans[i].begin, spans[i].end - spans[i].begin);
+  };
+  // A cell as the document has it: a string as the writer was given it, a number or literal as written
+  // (null: an empty cell).
+  auto cell = [&](std::size_t k, std::size_t column) {
+    const auto text = text_of(k, column);
+    if (!text) return;
+    const std::size_t i = at[k * width + column];
+    if (spans[i].string != JsonPick::kNoString) put_csv_text(out, pick.string(spans[i]));
+    else if (*text != "null") out += *text;
+  };
+  // The strategy and the warnings are a container each: short, read as JSON.
+  JsonValue scratch;
+  auto container = [&](std::string_view text) -> const JsonValue& {
+    if (!parse_json_tree_fast(text, scratch, true)) throw std::runtime_error("the result document's value does not read back");
+    return scratch;
+  };
+  for (std::size_t k = 0; k < results; ++k) {
+    out += fmt::format("{},{},", line, k);
+    for (std::size_t c = 0; c < documents; ++c) out += ',', cell(k, c);
+    out += ',';
+    if (const auto text = text_of(k, strategy)) put_csv_text(out, strategy_text(&container(*text)));
+    out += ',';
+    cell(k, regime);
+    for (std::size_t c = documents; c < columns; ++c) out += ',', cell(k, c);
+    out += ',';
+    if (const auto text = text_of(k, warnings); text && *text != "[]") {
+      std::string joined;
+      if (const JsonValue& w = container(*text); w.is(JsonValue::Type::array))
+        for (const auto& item : w.items) joined += (joined.empty() ? "" : " | ") + item.text;
+      put_csv_text(out, joined);
+    }
+    out += '\n';
+  }
+  return std::move(out).take();
+}
+
+}  // namespace impact3d::io
