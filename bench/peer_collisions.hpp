@@ -71,7 +71,8 @@ inline std::vector<NaiveCase> random_collisions(std::size_t n, std::uint64_t see
     for (NaiveVehicle& v : c.veh) {
       v.mass = in(700, 3500);
       const double ixx = in(300, 1500), iyy = in(1200, 6000), izz = iyy + in(0.5, 1.0) * ixx;
-      const Mat3<double> Q = rotation_zyx_deg(in(-15, 15), in(-15, 15), in(-15, 15));
+      const double roll = in(-15, 15), pitch = in(-15, 15), yaw = in(-15, 15);  // the last first, as GCC took them
+      const Mat3<double> Q = rotation_zyx_deg(yaw, pitch, roll);
       const Mat3<double> J = Q * Eigen::Vector3d(ixx, iyy, izz).asDiagonal() * Q.transpose();
       for (int p = 0; p < 3; ++p)
         for (int q = 0; q < 3; ++q) v.J[p][q] = (J(p, q) + J(q, p)) / 2;

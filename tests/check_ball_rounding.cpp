@@ -120,7 +120,10 @@ TEST_CASE("round_ball decides only balls whose ends round to one number, and giv
       switch (g() % 4) {
         case 0: break;  // none
         case 1:         // man x 2^(j - 30) units, 1 <= man <= 2^30, j from -40 to spare + 20
-          mag_set_ui_2exp_si(rad, 1 + g() % (1ul << 30), unit - 70 + static_cast<long>(g() % static_cast<unsigned>(spare + 61)));
+        {
+          const long j = unit - 70 + static_cast<long>(g() % static_cast<unsigned>(spare + 61));  // the last first
+          mag_set_ui_2exp_si(rad, 1 + g() % (1ul << 30), j);
+        }
           break;
         default: {  // a distance to an end of the interval, or a unit or half a unit either side
           const mp_limb_t distances[] = {h > low ? h - low : low - h, low + h, low + h / 2, 3 * h - low};

@@ -56,9 +56,9 @@ TEST_CASE("the Appendix A kernel (c3 corrected) equals K under its assumptions",
     Scene<double> s;
     for (auto& b : s.body) {
       b.mass = 800 + 2500 * u(g);
-      b.J_B = V3(300 + 1000 * u(g), 1200 + 4000 * u(g), 1500 + 4500 * u(g)).asDiagonal();
+      b.J_B = draw3(g, {300, 1300}, {1200, 5200}, {1500, 6000}).asDiagonal();
       b.R_WB = rotation_zyx_deg(-180 + 360 * u(g), 0.0, 0.0);
-      b.p_CgIc_B = V3(-2.5 + 5 * u(g), -1 + 2 * u(g), -0.5 + u(g));
+      b.p_CgIc_B = draw3(g, {-2.5, 2.5}, {-1, 1}, {-0.5, 0.5});
     }
     const double nyaw = -180 + 360 * u(g), roll = -40 + 80 * u(g);
     s.R_WC = rotation_zyx_deg(nyaw, 0.0, roll);

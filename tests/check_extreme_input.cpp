@@ -22,24 +22,34 @@ TEST_CASE("extreme cases: no NaN or infinity without a warning, text and JSON ag
   std::mt19937_64 g(8);
   std::uniform_real_distribution<double> u(0, 1);
   auto decades = [&](double lo, double hi) { return std::pow(10.0, lo + (hi - lo) * u(g)); };
-  auto signed_decades = [&](double lo, double hi) { return (u(g) < 0.5 ? -1 : 1) * decades(lo, hi); };
+  auto signed_decades = [&](double lo, double hi) {
+    const double sign = u(g) < 0.5 ? -1 : 1;
+    return sign * decades(lo, hi);
+  };
   const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-extreme-{}", ::getpid());
   fs::create_directories(dir);
   int solved = 0, rejected = 0;
   for (int i = 0; i < 60; ++i) {
     std::string vehicles;
-    for (int k = 0; k < 2; ++k)
+    for (int k = 0; k < 2; ++k) {
+      // Each number in a statement of its own, the last first (the order of a call's arguments is
+      // unspecified; this is the order GCC gave them when they were drawn inside the call).
+      const double r_z = signed_decades(-6, 2), r_y = signed_decades(-6, 5), r_x = signed_decades(-6, 5);
+      const double w_z = signed_decades(-6, 3), v_y = signed_decades(-6, 6), v_x = signed_decades(-6, 6);
+      const double pitch = 178 * u(g) - 89, yaw = 360 * u(g) - 180;
+      const double izz = decades(-6, 9), iyy = decades(-6, 9), ixx = decades(-6, 9), mass = decades(-6, 11);
       vehicles += fmt::format(R"({}{{"mass": {:.6g}, "inertia": {{"Ixx": {:.6g}, "Iyy": {:.6g}, "Izz": {:.6g}}},
           "orientation_deg": {{"yaw": {:.6g}, "pitch": {:.6g}}}, "velocity": [{:.6g}, {:.6g}, 0],
           "angular_velocity": [0, 0, {:.6g}], "impulse_center": [{:.6g}, {:.6g}, {:.6g}]}})",
-                              k ? "," : "", decades(-6, 11), decades(-6, 9), decades(-6, 9), decades(-6, 9), 360 * u(g) - 180,
-                              178 * u(g) - 89, signed_decades(-6, 6), signed_decades(-6, 6), signed_decades(-6, 3),
-                              signed_decades(-6, 5), signed_decades(-6, 5), signed_decades(-6, 2));
+                              k ? "," : "", mass, ixx, iyy, izz, yaw, pitch, v_x, v_y, w_z, r_x, r_y, r_z);
+    }
+    const double wach_mu = 2 * u(g), pc_crash_mu = 2 * u(g), restitution = u(g);
+    const double normal_pitch = 178 * u(g) - 89, normal_yaw = 360 * u(g) - 180;
     std::ofstream(dir / "case.json") << fmt::format(
         R"({{"vehicles": [{}], "contact": {{"normal_yaw_deg": {:.6g}, "normal_pitch_deg": {:.6g}}}, "restitution": {:.6g},
             "strategy": [{{"name": "pc-crash", "mu": {:.6g}}}, {{"name": "wach", "mu": {:.6g}, "limit": "gir"}},
                          {{"name": "brach", "mu_t": "critical", "mu_z": "critical"}}]}})",
-        vehicles, 360 * u(g) - 180, 178 * u(g) - 89, u(g), 2 * u(g), 2 * u(g));
+        vehicles, normal_yaw, normal_pitch, restitution, pc_crash_mu, wach_mu);
     const Run text = run_argv({"solve", "case.json"}, dir.string());
     const Run json = run_argv({"solve", "case.json", "--format", "json"}, dir.string());
     INFO(slurp(dir / "case.json"));

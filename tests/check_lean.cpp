@@ -444,7 +444,8 @@ TEST_CASE("The condition bound in double is above tr(M) tr(M^-1) at 100 digits, 
   int bounded = 0, refused = 0;
   for (int k = 0; k < 4000; ++k) {
     // M = Q diag(l) Q^T, eigenvalues spread by up to 10^5 and scaled by 10^-200 to 10^200.
-    const Mat3<double> Q = rotation_zyx_deg(180 * u(g), 90 * u(g), 180 * u(g));
+    const double roll = 180 * u(g), pitch = 90 * u(g), yaw = 180 * u(g);  // the last first, as draw3
+    const Mat3<double> Q = rotation_zyx_deg(yaw, pitch, roll);
     const double spread = std::pow(10.0, 2.5 + 2.5 * u(g)), scale = std::pow(10.0, 200 * u(g));
     const Vec3<double> l(scale, scale * std::pow(spread, 0.5 + 0.5 * u(g)), scale * spread);
     Mat3<double> M = Q * l.asDiagonal() * Q.transpose();
@@ -469,7 +470,8 @@ TEST_CASE("The condition bound in double is above tr(M) tr(M^-1) at 100 digits, 
   // double, M's small part is lost and its determinant is noise. No bound may fall below kappa.
   int nearly_singular = 0;
   for (int k = 0; k < 2000; ++k) {
-    const Vec3<F> w = Vec3<double>(u(g), u(g), u(g)).cast<F>().normalized();
+    const double wz = u(g), wy = u(g), wx = u(g);
+    const Vec3<F> w = Vec3<double>(wx, wy, wz).cast<F>().normalized();
     using std::ldexp;
     const F t = ldexp(F(1), 40 + static_cast<int>(k % 261));
     const Mat3<F> Mn = (Mat3<F>::Identity() + t * w * w.transpose()).eval();

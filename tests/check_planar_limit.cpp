@@ -46,12 +46,15 @@ TEST_CASE("planar limit: impulse ratio, critical ratio and full impact match a 2
       auto& b = s.body[i];
       b.mass = 800 + 2500 * u(g);
       const double izz = 1500 + 4000 * u(g);
-      b.J_B = V3(400 + 800 * u(g), 1200 + 4000 * u(g), izz).asDiagonal();
+      const double iyy = 1200 + 4000 * u(g), ixx = 400 + 800 * u(g);  // the last first, as draw3
+      b.J_B = V3(ixx, iyy, izz).asDiagonal();
       const double yaw = -180 + 360 * u(g);
       b.R_WB = rotation_zyx_deg(yaw, 0.0, 0.0);
-      b.v_W = V3(-25 + 50 * u(g), -25 + 50 * u(g), 0);
+      const double vy = -25 + 50 * u(g), vx = -25 + 50 * u(g);
+      b.v_W = V3(vx, vy, 0);
       b.w_B = V3(0, 0, -1 + 2 * u(g));
-      b.p_CgIc_B = V3(-2.5 + 5 * u(g), -1 + 2 * u(g), 0);
+      const double ry = -1 + 2 * u(g), rx = -2.5 + 5 * u(g);
+      b.p_CgIc_B = V3(rx, ry, 0);
       const V3 rho_W = b.R_WB * b.p_CgIc_B;
       p[i] = {b.mass, izz, yaw, b.w_B.z(), b.v_W.head<2>(), rho_W.head<2>()};
     }

@@ -29,7 +29,8 @@ double random_double(std::mt19937_64& g, int min_exponent, int max_exponent) {
   std::uniform_real_distribution<double> mantissa(1, 2);
   std::uniform_int_distribution<int> exponent(min_exponent, max_exponent);
   std::bernoulli_distribution negative(0.5);
-  const double x = std::ldexp(mantissa(g), exponent(g));
+  const int e = exponent(g);  // the last first, as GCC took the call's arguments
+  const double x = std::ldexp(mantissa(g), e);
   return negative(g) ? -x : x;
 }
 

@@ -2,10 +2,15 @@
 // `render` takes for --format csv at a floating precision) against the same rows taken from the result
 // document as it is written (result_csv_from_document, the route of exact results): byte for byte, on
 // every bundled case and on seeded variants of them (speeds, impulse centres, restitution, strategies,
-// unit systems, and names that CSV must quote), at every floating precision.
+// unit systems read and written, and names that CSV must quote), at every floating precision; and on a
+// solution holding a NaN, infinities and negative zeros. The header against the one the program wrote
+// before the direct route existed.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -18,11 +23,14 @@
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/io/render.hpp"
 #include "impact3d/io/result_csv.hpp"
+#include "impact3d/io/result_json.hpp"
+#include "impact3d/io/to_scene.hpp"
 #include "impact3d/numeric/strategy.hpp"
 
 namespace {
 
 using namespace impact3d::io;
+using impact3d::Units;
 using nlohmann::json;
 
 std::string slurp(const std::filesystem::path& p) {
@@ -33,9 +41,12 @@ std::string slurp(const std::filesystem::path& p) {
 }
 
 std::vector<json> bundled_cases() {
-  std::vector<json> out;
+  std::vector<std::filesystem::path> paths;
   for (const auto& e : std::filesystem::directory_iterator(IMPACT3D_EXAMPLES_DIR))
-    if (e.path().extension() == ".json") out.push_back(json::parse(slurp(e.path())));
+    if (e.path().extension() == ".json") paths.push_back(e.path());
+  std::sort(paths.begin(), paths.end());  // the directory's order is the file system's
+  std::vector<json> out;
+  for (const auto& p : paths) out.push_back(json::parse(slurp(p)));
   return out;
 }
 
@@ -60,37 +71,62 @@ json variant(json c, std::mt19937_64& g, int k) {
   return c;
 }
 
+// The cells of the first record of `text` (RFC 4180), read here independently of the writer.
+std::vector<std::string> cells_of(const std::string& text) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted && c == '"' && i + 1 < text.size() && text[i + 1] == '"') cells.back() += '"', ++i;
+    else if (c == '"') quoted = !quoted;
+    else if (!quoted && c == ',') cells.emplace_back();
+    else if (!quoted && c == '\n') break;
+    else cells.back() += c;
+  }
+  return cells;
+}
+
+std::string from_document(const CaseSpec& spec, const std::string& precision, RenderOptions o) {
+  JsonPick pick = result_csv_pick();
+  o.format = "jsonl";
+  o.pick = &pick;
+  const std::string document = render(spec, precision, o);
+  return result_csv_from_document(document, pick, spec, o.line);
+}
+
 }  // namespace
 
 TEST_CASE("the result CSV written from the analysis is the CSV taken from the written document") {
   std::mt19937_64 g(2611);
   std::vector<json> cases = bundled_cases();
   const std::size_t bundled = cases.size();
+  REQUIRE(bundled > 0);
   for (int k = 0; k < 40; ++k) cases.push_back(variant(cases[static_cast<std::size_t>(k) % bundled], g, k));
-  std::size_t compared = 0, rows = 0, quoted_names = 0, with_warnings = 0, empty_cells = 0;
+  // The units the numbers are written in (solve --units): the case's, or each system in turn.
+  const std::optional<Units> written[] = {std::nullopt, Units::metric_kmh, Units::US, Units::SI};
+  std::size_t compared = 0, rows = 0, quoted_names = 0, with_warnings = 0, empty_cells = 0, kmh = 0;
+  std::size_t floating = 0;
   for (const std::string& precision : precision_names()) {
     if (precision == "exact") continue;  // written from its document by both routes
+    ++floating;
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const CaseSpec spec = read_case(cases[i].dump());
       RenderOptions csv;
       csv.format = "csv";
       csv.line = static_cast<long>(i) + 7;
+      csv.units = written[i % 4];
       std::string direct;
       try {
         direct = render(spec, precision, csv);
       } catch (const impact3d::SolveError&) {
         continue;  // bodies that do not approach: no rows by either route
       }
-      JsonPick pick = result_csv_pick();
-      RenderOptions jsonl;
-      jsonl.format = "jsonl";
-      jsonl.pick = &pick;
-      const std::string document = render(spec, precision, jsonl);
       INFO(precision << " case " << i << ": " << cases[i].dump());
-      REQUIRE(direct == result_csv_from_document(document, pick, csv.line));
+      REQUIRE(direct == from_document(spec, precision, csv));
       ++compared;
+      kmh += csv.units == Units::metric_kmh;
       for (std::size_t at = direct.find('\n'); at != std::string::npos; at = direct.find('\n', at + 1)) ++rows;
-      quoted_names += direct.find(",\"with, comma") != std::string::npos;
+      quoted_names += direct.find(",\"") != std::string::npos;
       RenderOptions whole;
       whole.format = "jsonl";
       const json parsed = json::parse(render(spec, precision, whole));
@@ -100,10 +136,67 @@ TEST_CASE("the result CSV written from the analysis is the CSV taken from the wr
       }
     }
   }
-  // Every floating precision: 5 of them, each over the bundled cases and 40 variants, most approaching.
-  CHECK(compared >= 5 * (bundled + 30));
+  // Every floating precision, each over the bundled cases and 40 variants, most of them approaching.
+  CHECK(floating + 1 == precision_names().size());
+  CHECK(compared >= floating * (bundled + 30));
   CHECK(rows >= 3 * compared);
-  CHECK(quoted_names >= 5 * 4);
+  CHECK(kmh >= floating * 8);
+  CHECK(quoted_names >= floating * 4 * 5 / 8);  // the names of 5 of the 8 kinds are quoted
   CHECK(with_warnings > 0);
   CHECK(empty_cells > 0);
+}
+
+TEST_CASE("a NaN, an infinity and a negative zero are the document's null and -0 in the CSV") {
+  const CaseSpec spec = read_case(slurp(std::filesystem::path(IMPACT3D_EXAMPLES_DIR) / "offset_frontal.json"));
+  impact3d::Analysis<double> a = impact3d::analyze(to_scene<double>(spec), to_strategies<double>(spec));
+  REQUIRE(!a.solutions.empty());
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  auto& s = a.solutions[0];
+  s.impulse.P_C.x() = nan;
+  s.P_W.y() = -inf;
+  s.V_ri.z() = -0.0;
+  s.sliding_after = inf;
+  s.impulse.mu = nan;
+  s.change[1].pdof_deg = -0.0;
+  s.energy_loss = -nan;
+  s.rounding_bound = inf;
+  JsonPick pick = result_csv_pick();
+  const std::string document = result_json(spec, a, "double", 0, false, {}, true, &pick);
+  const std::string direct = result_csv_rows(spec, a, "double", 3);
+  CHECK(direct == result_csv_from_document(document, pick, spec, 3));
+  // The cells by name, from the header: null is an empty cell, -0 is written "-0".
+  const std::vector<std::string> header = cells_of(result_csv_header()), row = cells_of(direct);
+  REQUIRE(row.size() == header.size());
+  auto cell = [&](const std::string& name) {
+    const auto at = std::find(header.begin(), header.end(), name);
+    REQUIRE(at != header.end());
+    return row[static_cast<std::size_t>(at - header.begin())];
+  };
+  for (const char* empty : {"impulse.contact[0]", "impulse.world[1]", "sliding.after", "impulse_ratio.mu", "energy.loss", "rounding_bound"})
+    CHECK(cell(empty).empty());
+  CHECK(cell("relative_velocity.before[2]") == "-0");
+  CHECK(cell("vehicles[1].pdof_deg") == "-0");
+  CHECK(!cell("impulse.contact[1]").empty());
+}
+
+TEST_CASE("the result CSV's header is the one documented") {
+  // The header `batch --format csv` wrote before the rows were written from the analysis (README,
+  // "Results as CSV").
+  std::string expected = "line,result,error,name,units,precision,engine,strategy,regime,impulse_ratio.mu,impulse_ratio.mu_t,"
+                         "impulse_ratio.mu_z,limits.gir,limits.cir,limits.mu_t_critical,limits.mu_z_critical,plane_angle_deg";
+  for (const char* v : {"impulse.contact", "impulse.world", "relative_velocity.before", "relative_velocity.after"})
+    for (int i = 0; i < 3; ++i) expected += "," + std::string(v) + "[" + std::to_string(i) + "]";
+  expected += ",sliding.before,sliding.after,sliding.swerve_angle_deg,sliding.swerve_speed,impulse_space.restitution_effective,"
+              "impulse_space.t_sliding,impulse_space.z_sliding,impulse_space.volume";
+  for (const char* v : {"vehicles[0].", "vehicles[1]."}) {
+    for (const char* w : {"velocity", "angular_velocity", "delta_v"})
+      for (int i = 0; i < 3; ++i) expected += "," + std::string(v) + w + "[" + std::to_string(i) + "]";
+    for (const char* w : {"delta_v_magnitude", "pdof_deg", "pdof_clock"}) expected += "," + std::string(v) + w;
+  }
+  expected += ",energy.before,energy.after,energy.loss,rounding_bound,warnings\n";
+  CHECK(result_csv_header() == expected);
+  // A rejected row has as many cells.
+  const std::string error = result_csv_error(9, "$.x: a \"problem\", quoted");
+  CHECK(std::count(error.begin(), error.end(), ',') == std::count(expected.begin(), expected.end(), ',') + 1);
+  CHECK(error.rfind("9,,\"$.x: a \"\"problem\"\", quoted\",", 0) == 0);
 }

@@ -28,15 +28,20 @@ inline std::string example(const std::string& name) { return std::string(IMPACT3
 
 inline io::CaseSpec load_spec(const std::string& path) { return io::read_case(read_text(path)); }
 
-// Three numbers drawn from [lo, hi) ranges, the last first: the order GCC gives a call's arguments, so
-// that a seed draws the collisions it always drew. The order of a call's arguments is unspecified (clang
-// takes the first first); drawn inside one, the same seed gave other collisions under clang.
 struct Range {
   double lo, hi;
 };
-inline V3 draw3(std::mt19937_64& g, Range x, Range y, Range z) {
+// A number drawn from [lo, hi).
+inline double draw(std::mt19937_64& g, Range r) {
   std::uniform_real_distribution<double> u(0, 1);
-  const double c = z.lo + (z.hi - z.lo) * u(g), b = y.lo + (y.hi - y.lo) * u(g), a = x.lo + (x.hi - x.lo) * u(g);
+  return r.lo + (r.hi - r.lo) * u(g);
+}
+// Three numbers drawn so, the last first: the order GCC gives a call's arguments, so that a seed draws
+// the collisions it always drew. The order of a call's arguments is unspecified (clang takes the first
+// first); drawn inside one, the same seed gave other collisions under clang. Draw each number of a call
+// in a statement of its own.
+inline V3 draw3(std::mt19937_64& g, Range x, Range y, Range z) {
+  const double c = draw(g, z), b = draw(g, y), a = draw(g, x);
   return V3(a, b, c);
 }
 // A rotation of yaw, pitch and roll (degrees) drawn so.
@@ -48,11 +53,9 @@ inline M3 random_rotation(std::mt19937_64& g, Range yaw, Range pitch, Range roll
 // A random rigid body: principal moments obeying the triangle inequality, turned by a random small
 // rotation so that every product of inertia is non-zero.
 inline RigidBody<double> random_body(std::mt19937_64& g) {
-  std::uniform_real_distribution<double> u(0, 1);
-  auto in = [&](double a, double b) { return a + (b - a) * u(g); };
   RigidBody<double> b;
-  b.mass = in(700, 3500);
-  const double ixx = in(300, 1500), iyy = in(1200, 6000), izz = iyy + in(0.5, 1.0) * ixx;
+  b.mass = draw(g, {700, 3500});
+  const double ixx = draw(g, {300, 1500}), iyy = draw(g, {1200, 6000}), izz = iyy + draw(g, {0.5, 1.0}) * ixx;
   const M3 Q = random_rotation(g, {-15, 15}, {-15, 15}, {-15, 15});
   b.J_B = Q * Eigen::Vector3d(ixx, iyy, izz).asDiagonal() * Q.transpose();
   b.J_B = (b.J_B + b.J_B.transpose()).eval() / 2;

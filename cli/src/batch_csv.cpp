@@ -5,7 +5,6 @@
 // rows are written by io/result_csv.hpp.
 #include "batch_csv.hpp"
 
-#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <charconv>

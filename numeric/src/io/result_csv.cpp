@@ -3,11 +3,13 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <stdexcept>
 
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/json_path.hpp"
 #include "impact3d/io/json_tree.hpp"
+#include "impact3d/io/strategy_kinds.hpp"
 
 namespace impact3d::io {
 namespace {
@@ -30,22 +32,6 @@ struct Names {
 };
 
 constexpr std::array<const char*, 4> kDocumentColumns = {"name", "units", "precision", "engine"};
-
-// The strategy as --strategy writes it, from the document's strategy object.
-std::string strategy_text(const JsonValue* s) {
-  if (!s || !s->is(JsonValue::Type::object)) return {};
-  std::string text, params;
-  for (std::size_t i = 0; i < s->keys.size(); ++i) {
-    const JsonValue& v = s->items[i];
-    if (s->keys[i] == "name") {
-      text = v.text;
-      continue;
-    }
-    params += params.empty() ? "" : ",";
-    params += s->keys[i] + "=" + v.text;
-  }
-  return params.empty() ? text : text + ":" + params;
-}
 
 }  // namespace
 
@@ -77,7 +63,7 @@ std::string result_csv_error(long line, const std::string& problem) {
 }
 
 std::string strategy_cell_text(const StrategySpec& s) {
-  // As write_strategy_echo writes the strategy, and strategy_text reads it back.
+  // The keys and values write_strategy_echo writes (result_json.hpp), in its order.
   const KindRow row = strategy_kind(s.kind);
   std::string text(row.name), params;
   for (const auto& p : row.parameters) {
@@ -93,7 +79,7 @@ std::string strategy_cell_text(const StrategySpec& s) {
 
 JsonPick result_csv_pick() {
   // Column c of the pick: the document's columns, result_csv_cells' columns, then each result's
-  // strategy, regime and warnings.
+  // regime and warnings (its strategy is the case's).
   std::vector<JsonPath> paths;
   auto in_results = [](const JsonPath& path) {
     JsonPath out = {PathStep::of_key("results"), PathStep::any_index()};
@@ -102,13 +88,13 @@ JsonPick result_csv_pick() {
   };
   for (const char* c : kDocumentColumns) paths.push_back(parse_json_path(c, c));
   for (const auto& n : result_csv_column_names()) paths.push_back(in_results(parse_json_path(n, n)));
-  for (const char* key : {"strategy", "regime", "warnings"}) paths.push_back(in_results({PathStep::of_key(key)}));
+  for (const char* key : {"regime", "warnings"}) paths.push_back(in_results({PathStep::of_key(key)}));
   return JsonPick(paths, true);
 }
 
-std::string result_csv_from_document(std::string_view document, const JsonPick& pick, long line) {
+std::string result_csv_from_document(std::string_view document, const JsonPick& pick, const CaseSpec& c, long line) {
   const std::size_t documents = kDocumentColumns.size(), columns = documents + result_csv_column_names().size();
-  const std::size_t strategy = columns, regime = columns + 1, warnings = columns + 2, width = columns + 3;
+  const std::size_t regime = columns, warnings = columns + 1, width = columns + 2;
   auto of_document = [&](std::size_t column) { return column < documents; };
   // The span of each (result, column): the document's columns sit in every result's row.
   std::size_t results = 0;
@@ -140,7 +126,7 @@ std::string result_csv_from_document(std::string_view document, const JsonPick& 
     if (spans[i].string != JsonPick::kNoString) put_csv_text(out, pick.string(spans[i]));
     else if (*text != "null") out += *text;
   };
-  // The strategy and the warnings are a container each: short, read as JSON.
+  // The warnings are an array: short, read as JSON.
   JsonValue scratch;
   auto container = [&](std::string_view text) -> const JsonValue& {
     if (!parse_json_tree_fast(text, scratch, true)) throw std::runtime_error("the result document's value does not read back");
@@ -150,7 +136,7 @@ std::string result_csv_from_document(std::string_view document, const JsonPick& 
     out += fmt::format("{},{},", line, k);
     for (std::size_t c = 0; c < documents; ++c) out += ',', cell(k, c);
     out += ',';
-    if (const auto text = text_of(k, strategy)) put_csv_text(out, strategy_text(&container(*text)));
+    if (k < c.strategies.size()) put_csv_text(out, strategy_cell_text(c.strategies[k]));
     out += ',';
     cell(k, regime);
     for (std::size_t c = documents; c < columns; ++c) out += ',', cell(k, c);

@@ -1,13 +1,12 @@
-// The result as CSV (README, "batch CSV"): a fixed set of columns, one row per strategy of each case,
-// every cell the text the result document (result_json.hpp) has at the column's path. A floating
-// precision writes the rows straight from the analysis (result_csv_rows); exact and certified results,
-// whose documents their own routes write, take their cells from the document as it is written
-// (result_csv_pick, result_csv_from_document). The columns are listed once, in
-// result_csv_cells, for the header, the paths picked and the cells.
+// The result as CSV (README, "Results as CSV"): a fixed set of columns, one row per strategy of each
+// case, every cell the text the result document (result_json.hpp) has at the column's path. A floating
+// precision writes the rows straight from the analysis (result_csv_rows); exact results, whose document
+// render_exact writes, take their cells from the document as it is written (result_csv_pick,
+// result_csv_from_document). The result's columns are listed once, in result_csv_cells, for the
+// header, the paths picked and the cells.
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <optional>
 #include <string>
@@ -19,7 +18,6 @@
 #include "impact3d/io/json_text.hpp"
 #include "impact3d/io/present.hpp"
 #include "impact3d/io/scalar_text.hpp"
-#include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/numeric/analysis.hpp"
 
 namespace impact3d::io {
@@ -193,8 +191,8 @@ std::string result_csv_rows(const CaseSpec& c, const Analysis<Scalar>& a, const 
   return std::move(out).take();
 }
 
-// The same rows from the text of a result document written with result_csv_pick's pick.
+// The same rows from the text of the result document of `c` written with result_csv_pick's pick.
 JsonPick result_csv_pick();
-std::string result_csv_from_document(std::string_view document, const JsonPick& pick, long line);
+std::string result_csv_from_document(std::string_view document, const JsonPick& pick, const CaseSpec& c, long line);
 
 }  // namespace impact3d::io
