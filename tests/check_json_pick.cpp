@@ -4,10 +4,8 @@
 // document must not change because something was picked; and writing only the picked values must give
 // the same spans, text for text, with the same strings.
 #include <filesystem>
-#include <fstream>
 #include <random>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,17 +16,12 @@
 #include "impact3d/io/json_pick.hpp"
 #include "impact3d/io/render.hpp"
 
+#include "support.hpp"
+
 namespace {
 
 using namespace impact3d::io;
 using nlohmann::json;
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Every value's path in the document, containers included.
 void paths_of(const json& v, JsonPath& at, std::vector<JsonPath>& out) {
@@ -76,7 +69,7 @@ TEST_CASE("picked spans read as the parser's values at their paths, and writing 
   std::size_t documents = 0, spans_checked = 0, strings_checked = 0;
   for (const auto& e : std::filesystem::directory_iterator(IMPACT3D_EXAMPLES_DIR)) {
     if (e.path().extension() != ".json") continue;
-    const CaseSpec spec = read_case(slurp(e.path()));
+    const CaseSpec spec = read_case(impact3d::test::read_text(e.path().string()));
     for (const std::string& precision : precision_names())
     for (const std::string format : {"jsonl", "json"}) {  // one line, and indented
       const std::string plain = render(spec, precision, {format, 0});

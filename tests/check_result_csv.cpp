@@ -8,11 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -27,18 +25,13 @@
 #include "impact3d/io/to_scene.hpp"
 #include "impact3d/numeric/strategy.hpp"
 
+#include "support.hpp"
+
 namespace {
 
 using namespace impact3d::io;
 using impact3d::Units;
 using nlohmann::json;
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::vector<json> bundled_cases() {
   std::vector<std::filesystem::path> paths;
@@ -46,7 +39,7 @@ std::vector<json> bundled_cases() {
     if (e.path().extension() == ".json") paths.push_back(e.path());
   std::sort(paths.begin(), paths.end());  // the directory's order is the file system's
   std::vector<json> out;
-  for (const auto& p : paths) out.push_back(json::parse(slurp(p)));
+  for (const auto& p : paths) out.push_back(json::parse(impact3d::test::read_text(p.string())));
   return out;
 }
 
@@ -147,7 +140,7 @@ TEST_CASE("the result CSV written from the analysis is the CSV taken from the wr
 }
 
 TEST_CASE("a NaN, an infinity and a negative zero are the document's null and -0 in the CSV") {
-  const CaseSpec spec = read_case(slurp(std::filesystem::path(IMPACT3D_EXAMPLES_DIR) / "offset_frontal.json"));
+  const CaseSpec spec = impact3d::test::load_spec(impact3d::test::example("offset_frontal.json"));
   impact3d::Analysis<double> a = impact3d::analyze(to_scene<double>(spec), to_strategies<double>(spec));
   REQUIRE(!a.solutions.empty());
   const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();

@@ -43,6 +43,12 @@ JsonPath parse_json_path(std::string_view text, const std::string& where) {
   return steps;
 }
 
+JsonPath under_each_result(const JsonPath& path) {
+  JsonPath out = {PathStep::of_key("results"), PathStep::any_index()};
+  out.insert(out.end(), path.begin(), path.end());
+  return out;
+}
+
 std::string path_text(const JsonPath& path) {
   std::string s = "$";
   for (const PathStep& step : path) {

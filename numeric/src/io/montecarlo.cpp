@@ -81,13 +81,8 @@ constexpr double kFar = 1e11;
 // What the pick records of each result document: every output, then the regime.
 JsonPick make_pick() {
   std::vector<JsonPath> paths;
-  auto in_results = [](const JsonPath& path) {
-    JsonPath out = {PathStep::of_key("results"), PathStep::any_index()};
-    out.insert(out.end(), path.begin(), path.end());
-    return out;
-  };
-  for (const auto& o : monte_carlo_outputs()) paths.push_back(in_results(o.path));
-  paths.push_back(in_results({PathStep::of_key("regime")}));
+  for (const auto& o : monte_carlo_outputs()) paths.push_back(under_each_result(o.path));
+  paths.push_back(under_each_result({PathStep::of_key("regime")}));
   return JsonPick(paths, true);
 }
 

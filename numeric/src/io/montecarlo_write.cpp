@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "impact3d/io/csv_text.hpp"
 #include "impact3d/io/escape.hpp"
 #include "impact3d/io/format_double.hpp"
 #include "impact3d/io/json_number.hpp"
@@ -47,20 +48,6 @@ void write_summary(JsonWriter& w, const OutputSummary& o, const Linearized& lin)
     put_shortest(w.key("max"), s.max);
   }
   w.end_object();
-}
-
-// A CSV cell: quoted when it must be.
-void cell(std::string& out, std::string_view s) {
-  if (s.find_first_of(",\"\r\n") == std::string_view::npos) {
-    out += s;
-    return;
-  }
-  out += '"';
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  out += '"';
 }
 
 // The first-order propagation beside the samples: ΔV, PDOF and the energy loss, and where the two part.
@@ -197,7 +184,7 @@ std::string montecarlo_text(const MonteCarloRun& run) {
 void samples_csv(const MonteCarloRun& run, const std::function<void(std::string_view)>& write) {
   const std::size_t outputs = monte_carlo_outputs().size(), inputs = run.inputs.size();
   std::string line = "sample";
-  for (const auto& in : run.inputs) line += ',', cell(line, in);
+  for (const auto& in : run.inputs) line += ',', put_csv_text(line, in);
   for (std::size_t k = 0; k < run.results.size(); ++k) {
     line += fmt::format(",results[{}].regime,results[{}].rejected", k, k);
     for (const auto& o : run.results[k].outputs) line += fmt::format(",results[{}].{}", k, o.output->text);
@@ -216,7 +203,7 @@ void samples_csv(const MonteCarloRun& run, const std::function<void(std::string_
       line += ',';
       if (regime >= 0) line += kRegimeNames[static_cast<std::size_t>(regime)];
       line += ',';
-      if (const std::uint16_t reason = run.reason_of[k][i]) cell(line, run.reasons[reason - 1u]);
+      if (const std::uint16_t reason = run.reason_of[k][i]) put_csv_text(line, run.reasons[reason - 1u]);
       for (const auto& o : run.results[k].outputs) {
         const auto c = static_cast<std::size_t>(o.output - monte_carlo_outputs().data());
         line += ',';

@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <array>
 #include <stdexcept>
 
 #include "impact3d/io/escape.hpp"
@@ -31,7 +30,15 @@ struct Names {
   }
 };
 
-constexpr std::array<const char*, 4> kDocumentColumns = {"name", "units", "precision", "engine"};
+// The document's columns' names, as result_csv_document_cells gives them.
+const std::vector<std::string>& document_column_names() {
+  static const std::vector<std::string> names = [] {
+    Names n;
+    result_csv_document_cells(n, CaseSpec{}, "", Engine::generated);
+    return std::move(n.names);
+  }();
+  return names;
+}
 
 }  // namespace
 
@@ -47,7 +54,7 @@ const std::vector<std::string>& result_csv_column_names() {
 
 std::string result_csv_header() {
   std::string out = "line,result,error";
-  for (const char* c : kDocumentColumns) out += std::string(",") + c;
+  for (const auto& c : document_column_names()) out += ',' + c;
   out += ",strategy,regime";
   for (const auto& c : result_csv_column_names()) out += ',' + c;
   out += ",warnings\n";
@@ -57,7 +64,7 @@ std::string result_csv_header() {
 std::string result_csv_error(long line, const std::string& problem) {
   std::string out = fmt::format("{},,", line);
   put_csv_text(out, printable(problem));
-  out.append(kDocumentColumns.size() + 2 + result_csv_column_names().size() + 1, ',');  // ... strategy, regime, ..., warnings
+  out.append(document_column_names().size() + 2 + result_csv_column_names().size() + 1, ',');  // ... strategy, regime, ..., warnings
   out += '\n';
   return out;
 }
@@ -81,19 +88,14 @@ JsonPick result_csv_pick() {
   // Column c of the pick: the document's columns, result_csv_cells' columns, then each result's
   // regime and warnings (its strategy is the case's).
   std::vector<JsonPath> paths;
-  auto in_results = [](const JsonPath& path) {
-    JsonPath out = {PathStep::of_key("results"), PathStep::any_index()};
-    out.insert(out.end(), path.begin(), path.end());
-    return out;
-  };
-  for (const char* c : kDocumentColumns) paths.push_back(parse_json_path(c, c));
-  for (const auto& n : result_csv_column_names()) paths.push_back(in_results(parse_json_path(n, n)));
-  for (const char* key : {"regime", "warnings"}) paths.push_back(in_results({PathStep::of_key(key)}));
+  for (const auto& c : document_column_names()) paths.push_back(parse_json_path(c, c));
+  for (const auto& n : result_csv_column_names()) paths.push_back(under_each_result(parse_json_path(n, n)));
+  for (const char* key : {"regime", "warnings"}) paths.push_back(under_each_result({PathStep::of_key(key)}));
   return JsonPick(paths, true);
 }
 
 std::string result_csv_from_document(std::string_view document, const JsonPick& pick, const CaseSpec& c, long line) {
-  const std::size_t documents = kDocumentColumns.size(), columns = documents + result_csv_column_names().size();
+  const std::size_t documents = document_column_names().size(), columns = documents + result_csv_column_names().size();
   const std::size_t regime = columns, warnings = columns + 1, width = columns + 2;
   auto of_document = [&](std::size_t column) { return column < documents; };
   // The span of each (result, column): the document's columns sit in every result's row.

@@ -32,6 +32,10 @@ inline constexpr std::size_t kPathMaxSteps = 8;
 // and _, not starting with a digit. Throws CaseError(where, problem).
 JsonPath parse_json_path(std::string_view text, const std::string& where);
 
+// The path under every result of a result document ("$.results[].<path>"): the result's fields that
+// JsonPick takes from each result in turn.
+JsonPath under_each_result(const JsonPath& path);
+
 // The path as messages spell it: "$.vehicles[0].mass" ("[]" for any index).
 std::string path_text(const JsonPath& path);
 

@@ -1,9 +1,9 @@
 // Values of a document taken by their paths as JsonWriter writes it, instead of reading the document
 // back: `montecarlo` takes its outputs so, and `batch --format csv` its cells at exact precision
-// (io/result_csv.hpp). A path is a chain of steps (a key, an index, or any
-// index); a value under an any-index step belongs to the group of that index ("results[].regime" of
-// the third result is in group 2). A string value is also kept as the writer was given it, so that no
-// reader has to undo the writer's escapes.
+// (io/result_csv.hpp). A path is a chain of steps (a key, an index, or any index); a value under an
+// any-index step belongs to the group of that index ("results[].regime" of the third result is in
+// group 2). A string value is also kept as the writer was given it, so that no reader has to undo the
+// writer's escapes.
 #pragma once
 
 #include <cassert>

@@ -2,8 +2,8 @@
 // case, every cell the text the result document (result_json.hpp) has at the column's path. A floating
 // precision writes the rows straight from the analysis (result_csv_rows); exact results, whose document
 // render_exact writes, take their cells from the document as it is written (result_csv_pick,
-// result_csv_from_document). The result's columns are listed once, in result_csv_cells, for the
-// header, the paths picked and the cells.
+// result_csv_from_document). The columns are listed once, the document's in result_csv_document_cells
+// and each result's in result_csv_cells, for the header, the paths picked and the cells.
 #pragma once
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "impact3d/io/case_spec.hpp"
+#include "impact3d/io/csv_text.hpp"
 #include "impact3d/io/json_pick.hpp"
 #include "impact3d/io/json_text.hpp"
 #include "impact3d/io/present.hpp"
@@ -22,22 +23,14 @@
 
 namespace impact3d::io {
 
-// A text cell, quoted (RFC 4180) where it must be: a comma, a quote or a line break inside, or a space
-// at either end that a spreadsheet would drop.
-template <typename Out>  // std::string or JsonText
-void put_csv_text(Out& out, std::string_view s) {
-  // A loop, not find_first_of, which calls memchr for every byte of a name or a warning.
-  const bool special = std::any_of(s.begin(), s.end(), [](char c) { return c == ',' || c == '"' || c == '\r' || c == '\n'; });
-  if (!special && (s.empty() || (s.front() != ' ' && s.back() != ' '))) {
-    out += s;
-    return;
-  }
-  out += '"';
-  for (char c : s) {
-    if (c == '"') out += '"';
-    out += c;
-  }
-  out += '"';
+// The result document's own columns, the same in every row of a case, in order; a sink as
+// result_csv_cells' takes each as text(name, text).
+template <typename Sink>
+void result_csv_document_cells(Sink& c, const CaseSpec& spec, std::string_view precision, Engine engine) {
+  c.text("name", spec.name);
+  c.text("units", units_name(spec.units));
+  c.text("precision", precision);
+  c.text("engine", engine_name(engine));
 }
 
 // The columns of one result, in order, each named by its path in the result document. A sink takes
@@ -156,14 +149,8 @@ std::string result_csv_rows(const CaseSpec& c, const Analysis<Scalar>& a, const 
   out.reserve(1024 * std::max<std::size_t>(a.solutions.size(), 1));
   // The document's cells, the same in every row.
   JsonText head;
-  head += ',';
-  put_csv_text(head, c.name);
-  head += ',';
-  put_csv_text(head, units_name(c.units));
-  head += ',';
-  put_csv_text(head, precision);
-  head += ',';
-  put_csv_text(head, engine_name(a.engine));
+  detail::CsvCells<Scalar> head_cells{head, p};
+  result_csv_document_cells(head_cells, c, precision, a.engine);
   head += ',';
   detail::CsvCells<Scalar> cells{out, p};
   for (std::size_t k = 0; k < a.solutions.size(); ++k) {
