@@ -76,8 +76,9 @@ TEST_CASE("numbers as the checker reports them: integers as printed, -0 as 0, va
   CHECK(w.items[0].text == "-0");
   CHECK(std::signbit(w.items[0].number));
   CHECK(compare_readers("[-0, -0.0, 1E+2, 18446744073709551615]") == 2);
-  // Beyond 64 bits simdjson refuses the integer; the checker reads it, as a double with its text.
-  CHECK(compare_readers("[123456789012345678901234567890]") == 1);
+  // Beyond 64 bits an integer is still a number: both read it as the double nearest its text, text kept
+  // (simdjson's strict parse refused it, which the fast reader no longer runs).
+  CHECK(compare_readers("[123456789012345678901234567890, -98765432109876543210987654321e-3]") == 2);
 }
 
 TEST_CASE("long literals below one: the value of the text, as the checker reads it (simdjson issue 2093)") {
@@ -111,6 +112,22 @@ TEST_CASE("the fast reader leaves to the checker what needs a message") {
     JsonValue v;
     INFO(text);
     CHECK(!parse_json_tree_fast(text, v));
+  }
+  // What the reader's own walk must refuse, there being no strict parse before it (json_tree.cpp): broken
+  // structure, broken literals, text after the root, and bytes that are not UTF-8 inside strings and keys.
+  for (const char* text : {"[1 2]", "{\"a\" 1}", "{\"a\": 1,}", "[1]]", "{\"a\": 1}}", "{\"a\": [}", "[1] x", "[1] 2",
+                           "{} {}", "[tru]", "[nulls]", "[1.]", "[-]", "[.5]", "[\"a\\x\"]", "[\"a]", "[\"\xff\"]",
+                           "{\"\xc3\": 0}", "[\"\xed\xa0\x80\"]", "[\"\xf4\x90\x80\x80\"]", "[\"\xc0\xaf\"]", "[1]\xff"}) {
+    JsonValue v;
+    INFO(text);
+    CHECK(!parse_json_tree_fast(text, v));
+    CHECK(compare_readers(text) == 0);  // the checker refuses it as well
+  }
+  // And what it must still take: whitespace after the root, every literal, valid multi-byte UTF-8.
+  for (const char* text : {"[1, 2] \n", "{\"a\": [true, false, null, -0.5e-3]}", "[\"\xc3\xa9\xe2\x82\xac\xf0\x9f\x9a\x97\"]",
+                           "{\"\xc3\xa9\": {}}\r\n\t"}) {
+    INFO(text);
+    CHECK(compare_readers(text) == 2);
   }
   JsonValue v;
   CHECK(!parse_json_tree_fast(std::string(33, '[') + std::string(33, ']'), v));
