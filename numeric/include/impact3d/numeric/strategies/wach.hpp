@@ -30,7 +30,10 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
   }
   out.regime = capped ? Regime::capped : Regime::sliding;
   out.mu = capped ? limit : spec.mu;
-  flag_if_negative_ratio(out, *out.mu, "impulse ratio");
+  // A negative ratio pushes along the initial sliding. With none, the plane is undefined and its direction
+  // is a convention (+t): taking -t would flip the sign of the cap (eqs 19-20 are odd in (c, s)), so
+  // the sign says nothing about the impact and is not flagged.
+  if (!has_warning(out.codes, WarningCode::plane_undefined)) flag_if_negative_ratio(out, *out.mu, "impulse ratio");
   const auto P = Engine::try_plane_impulse(p, ax, *out.mu);
   if (!P) return {"wach (eqs 18, 22)"};
   out.P_C = *P;
