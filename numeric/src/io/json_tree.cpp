@@ -1,5 +1,6 @@
-// The fast reader accepts only what it can vouch for: simdjson's On Demand reader validates the text as
-// UTF-8 and its structure as it is walked, the walk visits every value (so each literal is validated) and
+// The fast reader accepts only what it can vouch for: simdjson's On Demand reader validates the strings as
+// UTF-8 (the SIMD kernels the whole text, the fallback kernel the strings, a byte outside them being a
+// token the walk refuses) and the structure as it is walked, the walk visits every value (so each literal is validated) and
 // nothing may follow the root; a limit reached, a duplicate key, a string that is not valid UTF-8 or
 // anything simdjson refuses is left to the checking parser, whose messages name the path. So the fast
 // reader never decides what a message says, only that none is needed. (A strict dom parse before the
@@ -24,8 +25,8 @@ constexpr std::size_t kScannedKeys = 64;
 
 struct Walk {
   bool as_written = false;
-  // The reader's first stage has validated the text as UTF-8, so a string needs checking again only when
-  // a \u escape may have made a lone surrogate of it.
+  // The reader's first stage has validated the strings as UTF-8, so a string needs checking again only
+  // when a \u escape may have made a lone surrogate of it.
   bool escapes = true;
   std::size_t values = 0;
 
