@@ -1,9 +1,9 @@
 // The fast reader accepts only what it can vouch for: simdjson's On Demand reader validates the strings as
-// UTF-8 (the SIMD kernels the whole text, the fallback kernel the strings, a byte outside them being a
-// token the walk refuses) and the structure as it is walked, the walk visits every value (so each literal is validated) and
-// nothing may follow the root; a limit reached, a duplicate key, a string that is not valid UTF-8 or
-// anything simdjson refuses is left to the checking parser, whose messages name the path. So the fast
-// reader never decides what a message says, only that none is needed. (A strict dom parse before the
+// UTF-8 (the SIMD kernels the whole text, the fallback kernel the strings, a byte outside them being a token
+// the walk refuses) and the structure as it is walked, the walk visits every value (so each literal is
+// validated) and nothing may follow the root; a limit reached, a duplicate key, a string that is not valid
+// UTF-8 or anything simdjson refuses is left to the checking parser, whose messages name the path. So the
+// fast reader never decides what a message says, only that none is needed. (A strict dom parse before the
 // walk validated the text a second time: a tenth of a batch row's instructions.)
 #include "impact3d/io/json_tree.hpp"
 

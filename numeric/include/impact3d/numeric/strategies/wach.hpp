@@ -10,14 +10,33 @@ namespace impact3d::strategies {
 // Fills `out`; returns the singular constraint system, if any (then `out` is incomplete).
 template <typename Engine, typename Scalar>
 Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolution<Scalar>& out) {
-  const PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), plane_length(p.V_ri.y(), p.V_ri.z()),
-                                               magnitude(p.V_ri), out,
-                                               "phi (eq 21) is undefined: there is no initial sliding velocity; "
-                                               "the t axis (phi = 0) is used");
+  PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), plane_length(p.V_ri.y(), p.V_ri.z()),
+                                         magnitude(p.V_ri), out,
+                                         "phi (eq 21) is undefined: there is no initial sliding velocity; "
+                                         "the t axis is used, directed so that the cap is not negative");
   out.cir = Engine::try_plane_ratio(p, ax, p.restitution);
   if (!out.cir) return {"wach CIR (eq 19)"};
   out.gir = Engine::try_plane_ratio(p, ax, Scalar(0));
   if (!out.gir) return {"wach GIR (eq 20)"};
+  if (has_warning(out.codes, WarningCode::plane_undefined)) {
+    // Without sliding the axis's direction is a convention, and the caps (eqs 19-20) are odd in it: on
+    // +t a negative cap would cap every mu >= 0, so that mu = 0 still gave the sticking impulse. Directed
+    // so that the cap is not negative, the impulse is friction toward sticking, capped where it sticks,
+    // whichever way the contact frame's t axis points.
+    bool flip;
+    {
+      const DecisionName<Scalar> name(decision_names::fallback_direction);
+      flip = (spec.limit == WachLimit::cir ? *out.cir : *out.gir) < Scalar(0);
+    }
+    if (flip) {
+      ax = {Scalar(-1), Scalar(0)};
+      out.cir = Scalar(-*out.cir);
+      out.gir = Scalar(-*out.gir);
+      out.plane = ax;
+      if constexpr (!is_exact_v<Scalar>)
+        if (out.for_report) out.plane_angle_deg = Scalar(180);
+    }
+  }
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
   flag_if_not_finite(out, *out.gir, "GIR (eq 20)");
   const Scalar limit = spec.limit == WachLimit::cir ? *out.cir : *out.gir;
@@ -30,10 +49,7 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
   }
   out.regime = capped ? Regime::capped : Regime::sliding;
   out.mu = capped ? limit : spec.mu;
-  // A negative ratio pushes along the initial sliding. With none, the plane is undefined and its direction
-  // is a convention (+t): taking -t would flip the sign of the cap (eqs 19-20 are odd in (c, s)), so
-  // the sign says nothing about the impact and is not flagged.
-  if (!has_warning(out.codes, WarningCode::plane_undefined)) flag_if_negative_ratio(out, *out.mu, "impulse ratio");
+  flag_if_negative_ratio(out, *out.mu, "impulse ratio");
   const auto P = Engine::try_plane_impulse(p, ax, *out.mu);
   if (!P) return {"wach (eqs 18, 22)"};
   out.P_C = *P;
