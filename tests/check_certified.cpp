@@ -4,9 +4,11 @@
 // promises.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <flint/fmpq.h>
 
@@ -141,6 +143,56 @@ TEST_CASE("certified balls hold the exact fractions of every rational case", "[c
   }
   CHECK(cases == 12);
   CHECK(tally.checked > 1000);
+}
+
+TEST_CASE("with no sliding and a zero cap, the balls' undecided plane, axis and ratio are exact ties", "[certified]") {
+  // A constructed rational case: both impulse centres on the normal line (a 3-4-5 direction, so that the
+  // frame's entries are not dyadic and the balls carry radii) and the bodies approaching along it. Then
+  // K n is parallel to n (each lever arm is along n), so K_tn = K_zn = 0 and, with no sliding, both caps
+  // are exactly zero (eqs 19-20), as are the ratio Wach uses and, for pc-crash, the Full Impact's
+  // contact-plane part. The balls hold 0 with a radius and cannot decide; exact arithmetic says each is
+  // a tie. Each undecided decision named below must be among the undecided, or the case did not reach
+  // what it tests.
+  const io::CaseSpec c = io::read_case(R"({"name": "no sliding along a 3-4-5 normal", "units": "SI",
+    "vehicles": [
+      {"name": "A", "mass": 1450, "inertia": {"Ixx": 520, "Iyy": 2200, "Izz": 2400},
+       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [7.8, 10.4, 0],
+       "impulse_center": [1.2, 1.6, 0], "angular_velocity": [0, 0, 0]},
+      {"name": "B", "mass": 1700, "inertia": {"Ixx": 650, "Iyy": 2900, "Izz": 3100},
+       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [0, 0, 0],
+       "impulse_center": [-0.9, -1.2, 0], "angular_velocity": [0, 0, 0]}],
+    "contact": {"normal": [-3, -4, 0], "tangent": [4, -3, 0]}, "restitution": 0.1,
+    "strategy": [{"name": "wach", "mu": 0.3, "limit": "cir"}, {"name": "wach", "mu": 0, "limit": "gir"},
+                 {"name": "pc-crash", "mu": 0.5}]})");
+  namespace n = decision_names;
+  // The ratio Wach uses at mu = 0 is the cap's ball only when the cap's (undecided) comparison caps it;
+  // else it is mu's exact zero, decided: which, the engine's midpoint says. At mu = 0.3 it is capped.
+  const std::vector<std::vector<const char*>> expected = {{n::plane_direction, n::fallback_direction, n::ratio_sign},
+                                                          {n::plane_direction, n::fallback_direction},
+                                                          {n::plane_direction}};
+  int checked = 0;
+  for (Engine engine : kEngines) {
+    const ExactAnalysis x = exact_analyze(io::to_scene<rational>(c), io::to_strategies<rational>(c), engine);
+    const BallBits bits(128);
+    const CertifiedAnalysis b = certified_analyze(io::to_scene<Ball>(c), io::to_strategies<Ball>(c), engine);
+    for (std::size_t k = 0; k < 3; ++k) {
+      INFO("engine " << static_cast<int>(engine) << ", strategy " << k);
+      REQUIRE(x.results[k].solution);
+      const auto ties = exact_ties(b.decisions[k], io::to_strategies<rational>(c)[k], *x.results[k].solution);
+      for (const char* name : expected[k]) {
+        INFO(name);
+        const auto d = std::find_if(b.decisions[k].begin(), b.decisions[k].end(), [&](const Decision& e) { return e.name == name; });
+        REQUIRE(d != b.decisions[k].end());
+        CHECK(d->status == DecisionStatus::undecided);
+        ++checked;
+      }
+      for (const auto& d : b.decisions[k]) {
+        INFO(d.name << ": " << d.detail);
+        if (d.status == DecisionStatus::undecided) CHECK(std::find(ties.begin(), ties.end(), d.name) != ties.end());
+      }
+    }
+  }
+  CHECK(checked == 2 * 6);
 }
 
 TEST_CASE("certified balls hold the 100-digit solve of seeded random cases", "[certified]") {

@@ -83,14 +83,18 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
                                     const Solution<rational>& exact) {
   namespace n = decision_names;
   const rational zero(0);
+  // The cap a Wach solution used (eq 19 or 20), where the strategy is Wach's.
+  auto wach_cap = [&]() -> const std::optional<rational>* {
+    const auto* w = std::get_if<Wach<rational>>(&strategy);
+    if (!w) return nullptr;
+    return w->limit == WachLimit::cir ? &exact.impulse.cir : &exact.impulse.gir;
+  };
   auto limit_tie = [&]() {
     if (const auto* pc = std::get_if<PcCrash<rational>>(&strategy)) return exact.impulse.gir && *exact.impulse.gir == pc->mu;
-    if (const auto* w = std::get_if<Wach<rational>>(&strategy)) {
-      const auto& limit = w->limit == WachLimit::cir ? exact.impulse.cir : exact.impulse.gir;
-      return limit && *limit == w->mu;
-    }
-    return false;
+    const auto* cap = wach_cap();
+    return cap && *cap && **cap == std::get<Wach<rational>>(strategy).mu;
   };
+  const bool plane_undefined = has_warning(exact.impulse.codes, WarningCode::plane_undefined);
   std::vector<std::string> ties;
   for (const auto& d : decisions) {
     if (d.status != DecisionStatus::undecided) continue;
@@ -98,6 +102,13 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
     bool tie = false;
     if (!std::strcmp(name, n::pc_crash_regime) || !std::strcmp(name, n::wach_cap_cir) || !std::strcmp(name, n::wach_cap_gir))
       tie = limit_tie();
+    else if (!std::strcmp(name, n::plane_direction))
+      tie = plane_undefined;  // exactly, the direction's length is zero
+    else if (!std::strcmp(name, n::fallback_direction)) {
+      const auto* cap = wach_cap();
+      tie = plane_undefined && cap && *cap && **cap == zero;
+    } else if (!std::strcmp(name, n::ratio_sign))
+      tie = exact.impulse.mu && *exact.impulse.mu == zero;
     else if (!std::strcmp(name, n::normal_impulse_sign))
       tie = exact.impulse.P_C.x() == zero;
     else if (!std::strcmp(name, n::volume))

@@ -42,10 +42,11 @@ CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Stra
                                     Engine engine = Engine::generated);
 
 // The names of `decisions` (of one strategy's certified solve) that are exact ties by the exact solution
-// of the same strategy: mu equal to the limit it is compared with, P_n, V_rn after or the energy loss
-// exactly zero. Only undecided decisions are looked at. `same_result` says whether both branches of a
-// tie give the same result (a regime or cap: the impulse is continuous there); a category (the volume,
-// the sliding's change, a warning) is not.
+// of the same strategy: mu equal to the limit it is compared with; P_n, V_rn after, the energy loss, the
+// ratio used, the solution plane's direction or (on Wach's fallback axis) the cap exactly zero. Only
+// undecided decisions are looked at. `same_result` says whether both branches of a tie give the same
+// result (a regime or cap: the impulse is continuous there); a category (the volume, the sliding's change,
+// a warning) is not.
 bool same_result_at_tie(const std::string& decision);
 
 // Whether a decision chooses the impulse (and with it every state after): the regime, the cap, the

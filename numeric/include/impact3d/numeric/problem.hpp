@@ -66,7 +66,9 @@ struct Problem {
   // error (rounding::solve_roundoff).
   bool negligible(const Scalar& x, const Scalar& scale) const {
     if constexpr (std::numeric_limits<Scalar>::is_exact) return x == Scalar(0);
-    else if constexpr (is_enclosure_v<Scalar>) return !(x > Scalar(0));  // its radius is the rounding
+    // A ball's radius is its rounding; one that holds 0 takes the zero branch (the direction undefined),
+    // where the other would divide by a ball holding 0.
+    else if constexpr (is_enclosure_v<Scalar>) return rounding::within_rounding(x, Scalar(0));
     else return within(x, [&](const Scalar& k) { return rounding::solve_roundoff(k, scale); }, true);
   }
 };
