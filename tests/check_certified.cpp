@@ -166,7 +166,8 @@ TEST_CASE("with no sliding and a zero cap, the balls' undecided plane, axis and 
                  {"name": "pc-crash", "mu": 0.5}]})");
   namespace n = decision_names;
   // The ratio Wach uses at mu = 0 is the cap's ball only when the cap's (undecided) comparison caps it;
-  // else it is mu's exact zero, decided: which, the engine's midpoint says. At mu = 0.3 it is capped.
+  // else it is mu's exact zero, a tie by the balls themselves: which, the engine's midpoint says. At
+  // mu = 0.3 it is capped (0.3 exceeds the cap's ball).
   const std::vector<std::vector<const char*>> expected = {{n::plane_direction, n::fallback_direction, n::ratio_sign},
                                                           {n::plane_direction, n::fallback_direction},
                                                           {n::plane_direction}};

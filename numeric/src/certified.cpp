@@ -107,9 +107,12 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
     else if (!std::strcmp(name, n::fallback_direction)) {
       const auto* cap = wach_cap();
       tie = plane_undefined && cap && *cap && **cap == zero;
-    } else if (!std::strcmp(name, n::ratio_sign))
-      tie = exact.impulse.mu && *exact.impulse.mu == zero;
-    else if (!std::strcmp(name, n::normal_impulse_sign))
+    } else if (!std::strcmp(name, n::ratio_sign)) {
+      // Wach's alone. A decimal mu's ball is exact or excludes 0, so only a capped ratio is undecided:
+      // the tie is the cap's, which, exactly zero, the exact solve also caps at (mu >= 0).
+      const auto* cap = wach_cap();
+      tie = cap && *cap && **cap == zero;
+    } else if (!std::strcmp(name, n::normal_impulse_sign))
       tie = exact.impulse.P_C.x() == zero;
     else if (!std::strcmp(name, n::volume))
       tie = exact.V_rf.x() == zero || exact.V_rf.y() == zero;
