@@ -191,6 +191,15 @@ TEST_CASE("with no sliding and a zero cap, the balls' undecided plane, axis and 
         INFO(d.name << ": " << d.detail);
         if (d.status == DecisionStatus::undecided) CHECK(std::find(ties.begin(), ties.end(), d.name) != ties.end());
       }
+      // An undecided comparison that may choose the impulse and is no tie, just after the plane's: the
+      // balls may have gone where the exact solve did not, so the plane stays a tie and nothing after it is.
+      auto guarded = b.decisions[k];
+      const auto plane =
+          std::find_if(guarded.begin(), guarded.end(), [](const Decision& e) { return e.name == n::plane_direction; });
+      REQUIRE(plane != guarded.end());
+      guarded.insert(plane + 1, Decision{n::unnamed, DecisionStatus::undecided, "inserted by the test"});
+      CHECK(exact_ties(guarded, io::to_strategies<rational>(c)[k], *x.results[k].solution) ==
+            std::vector<std::string>{n::plane_direction});
     }
   }
   CHECK(checked == 2 * 6);

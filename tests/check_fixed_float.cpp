@@ -249,6 +249,75 @@ TEST_CASE("A product's top decides its rounding only where the rest cannot chang
   CHECK(checked > kDrawn);
 }
 
+// Products built on and about a tie, where the top (multiply6_high) cannot decide the rounding and the
+// whole product is taken: random operands land there about once in 2^45, so the test above never sees
+// that path run. The product's last place is bit P - 1 of the 2P-bit integer A B or, where A B has all
+// 2P bits, bit P ("wide"); its round bit just below. An exact tie: A = 2^s A', B = 2^(r - s) B' with
+// A', B' drawn and odd, r the round bit, so that A B = 2^r A' B' with A' B' odd (the last place's parity
+// drawn with them, for ties to even). About a tie: A drawn and odd, B solving A B = the tie less d
+// modulo 2^(r + 1), d from 2 units of x's lowest bit above the tie to 20 below, plus drawn bits under a
+// unit. Each product against mpfr_mul, bit for bit; at least a third of them must leave the top
+// undecided (where the assembly runs), and there must be exact ties of both widths.
+TEST_CASE("Products on and about a tie, which the top cannot decide, are MPFR's", "[fixed_float]") {
+  namespace lp = impact3d::mp::limb_product;
+  std::mt19937_64 g(20261129);
+  mpz_t A, B, target, t, mod, prod;
+  for (mpz_ptr z : {A, B, target, t, mod, prod}) mpz_init(z);
+  auto drawn = [&](mpz_ptr z, unsigned bits) {  // uniform below 2^bits
+    mpz_set_ui(z, 0);
+    for (unsigned i = 0; i < bits; i += 64) mpz_mul_2exp(z, z, 64), mpz_add_ui(z, z, g());
+    mpz_fdiv_r_2exp(z, z, bits);
+  };
+  auto drawn_odd = [&](mpz_ptr z, unsigned bits) {  // exactly `bits` bits, odd
+    drawn(z, bits);
+    mpz_setbit(z, bits - 1), mpz_setbit(z, 0);
+  };
+  int built = 0, checked = 0, top_undecided = 0, ties[2] = {0, 0};
+  constexpr int kTries = 4000;
+  for (int k = 0; k < kTries; ++k) {
+    const unsigned wide = g() % 2, round_bit = kP - 2 + wide, unit = round_bit - (F::kSpare - 1);
+    const long units = g() % 4 == 0 ? 0 : static_cast<long>(g() % 23) - 2;
+    const bool exact = units == 0 && g() % 2 == 0;
+    if (exact) {
+      const unsigned s = 60 + static_cast<unsigned>(g() % (round_bit - 119));
+      drawn_odd(A, kP - s), mpz_mul_2exp(A, A, s);
+      drawn_odd(B, kP - (round_bit - s)), mpz_mul_2exp(B, B, round_bit - s);
+    } else {
+      drawn_odd(A, kP);
+      mpz_set_ui(target, 0), mpz_setbit(target, round_bit);
+      mpz_set_si(t, units), mpz_mul_2exp(t, t, unit), mpz_sub(target, target, t);
+      drawn(t, unit), mpz_sub(target, target, t);
+      mpz_set_ui(mod, 0), mpz_setbit(mod, round_bit + 1);
+      REQUIRE(mpz_invert(t, A, mod) != 0);
+      mpz_mul(B, target, t), mpz_mod(B, B, mod);
+      if (!wide) mpz_setbit(B, kP - 1);  // B's top bit is free modulo 2^(P - 1)
+    }
+    mpz_mul(prod, A, B);
+    if (mpz_sizeinbase(A, 2) != kP || mpz_sizeinbase(B, 2) != kP || mpz_sizeinbase(prod, 2) != 2 * kP - 1 + wide) continue;
+    ++built;
+    Mpfr ma, mb;
+    mpfr_set_z_2exp(ma.x, A, -kP, MPFR_RNDN), mpfr_set_z_2exp(mb.x, B, -kP, MPFR_RNDN);
+    if (g() % 2) mpfr_neg(ma.x, ma.x, MPFR_RNDN);
+    const F a = F::of(ma.x), b = F::of(mb.x);
+    checked += agree(a, b, ma.x, mb.x, [](const F& x, const F& y) { return x * y; }, mpfr_mul);
+    ties[wide] += exact;
+    if (lp::kAvailable) {  // the top's x as FixedFloat reads it (top_rounded_into)
+      F::Limb w[7];
+      lp::multiply6_high(w, a.limbs().data(), b.limbs().data());
+      const unsigned sh = static_cast<unsigned>(1 - (w[6] >> 63));
+      const F::Limb r0 = (w[1] << sh) | ((w[0] >> 1) >> (63 - sh));
+      top_undecided += !F::top_decides(r0 & ((F::Limb{1} << F::kSpare) - 1));
+    }
+  }
+  for (mpz_ptr z : {A, B, target, t, mod, prod}) mpz_clear(z);
+  CHECK(built >= kTries / 4);
+  CHECK(checked == built);
+  CHECK(ties[0] >= 40);
+  CHECK(ties[1] >= 40);
+  if (lp::kAvailable) CHECK(top_undecided >= built / 3);
+  else WARN("the assembly is not run here: the products took GMP's whole product");
+}
+
 // The quotient by an integer below 2^32 is FixedFloat's own: a product by the divisor's reciprocal
 // where the assembly runs, else (with IMPACT3D_GMP_PRODUCT set, the suite's second run, and for powers
 // of two) a long division by a precomputed inverse; MPFR's division by a machine integer where the result

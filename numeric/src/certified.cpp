@@ -89,6 +89,10 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
     if (!w) return nullptr;
     return w->limit == WachLimit::cir ? &exact.impulse.cir : &exact.impulse.gir;
   };
+  auto cap_is_zero = [&]() {
+    const auto* cap = wach_cap();
+    return cap && *cap && **cap == zero;
+  };
   auto limit_tie = [&]() {
     if (const auto* pc = std::get_if<PcCrash<rational>>(&strategy)) return exact.impulse.gir && *exact.impulse.gir == pc->mu;
     const auto* cap = wach_cap();
@@ -104,14 +108,12 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
       tie = limit_tie();
     else if (!std::strcmp(name, n::plane_direction))
       tie = plane_undefined;  // exactly, the direction's length is zero
-    else if (!std::strcmp(name, n::fallback_direction)) {
-      const auto* cap = wach_cap();
-      tie = plane_undefined && cap && *cap && **cap == zero;
-    } else if (!std::strcmp(name, n::ratio_sign)) {
+    else if (!std::strcmp(name, n::fallback_direction))
+      tie = plane_undefined && cap_is_zero();
+    else if (!std::strcmp(name, n::ratio_sign)) {
       // Wach's alone. A decimal mu's ball is exact or excludes 0, so only a capped ratio is undecided:
       // the tie is the cap's, which, exactly zero, the exact solve also caps at (mu >= 0).
-      const auto* cap = wach_cap();
-      tie = cap && *cap && **cap == zero;
+      tie = cap_is_zero();
     } else if (!std::strcmp(name, n::normal_impulse_sign))
       tie = exact.impulse.P_C.x() == zero;
     else if (!std::strcmp(name, n::volume))
@@ -126,7 +128,10 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
       tie = across == zero || along == zero || (exact.V_rf.y() == zero && exact.V_rf.z() == zero);
     } else if (!std::strcmp(name, n::energy_loss_sign))
       tie = exact.energy_loss == zero;
-    if (tie) ties.push_back(d.name);
+    if (tie)
+      ties.push_back(d.name);
+    else if (chooses_impulse(d.name))
+      break;  // the balls may have left the exact solve's branch here: what they compared after is not its to judge
   }
   return ties;
 }

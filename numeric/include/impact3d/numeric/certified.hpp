@@ -44,9 +44,13 @@ CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Stra
 // The names of `decisions` (of one strategy's certified solve) that are exact ties by the exact solution
 // of the same strategy: mu equal to the limit it is compared with; P_n, V_rn after, the energy loss, the
 // ratio used, the solution plane's direction or (on Wach's fallback axis) the cap exactly zero. Only
-// undecided decisions are looked at. `same_result` says whether both branches of a tie give the same
-// result (a regime or cap: the impulse is continuous there); a category (the volume, the sliding's change,
-// a warning) is not.
+// undecided decisions are looked at, and none after an undecided one that chooses the impulse and is no
+// tie: there the balls may have taken a branch the exact solve does not. The list's order is that of each
+// name's first comparison (DecisionLog::record), which is the order taken while each name that chooses
+// the impulse (the plane, the fallback axis, the cap or regime) is compared once, after the approach and
+// before the post-impact states, as the strategies do.
+// `same_result_at_tie` says whether both branches of a tie give the same result (a regime or cap: the
+// impulse is continuous there); a category (the volume, the sliding's change, a warning) is not.
 bool same_result_at_tie(const std::string& decision);
 
 // Whether a decision chooses the impulse (and with it every state after): the regime, the cap, the

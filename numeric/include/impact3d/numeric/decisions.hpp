@@ -17,7 +17,7 @@ inline constexpr char approach[] = "approach: V_rn > 0";
 inline constexpr char pc_crash_regime[] = "regime: mu >= GIR (eq 14)";
 inline constexpr char wach_cap_cir[] = "cap: mu >= CIR (eq 19)";
 inline constexpr char wach_cap_gir[] = "cap: mu >= GIR (eq 20)";
-inline constexpr char plane_direction[] = "solution plane: direction defined";
+inline constexpr char plane_direction[] = "solution plane: direction lost in rounding";
 inline constexpr char fallback_direction[] = "solution plane: the fallback axis's direction, the cap's sign";
 inline constexpr char ratio_sign[] = "sign of the impulse ratio used";
 inline constexpr char normal_impulse_sign[] = "sign of P_n";

@@ -18,6 +18,8 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
   if (!out.cir) return {"wach CIR (eq 19)"};
   out.gir = Engine::try_plane_ratio(p, ax, Scalar(0));
   if (!out.gir) return {"wach GIR (eq 20)"};
+  const bool on_cir = spec.limit == WachLimit::cir;
+  const auto& cap = on_cir ? out.cir : out.gir;  // the cap used; a flip below negates it in place
   if (has_warning(out.codes, WarningCode::plane_undefined)) {
     // Without sliding the axis's direction is a convention, and the caps (eqs 19-20) are odd in it: on
     // +t a negative cap would cap every mu >= 0, so that mu = 0 still gave the sticking impulse. Directed
@@ -26,7 +28,7 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
     bool flip;
     {
       const DecisionName<Scalar> name(decision_names::fallback_direction);
-      flip = (spec.limit == WachLimit::cir ? *out.cir : *out.gir) < Scalar(0);
+      flip = *cap < Scalar(0);
     }
     if (flip) {
       ax = {Scalar(-1), Scalar(0)};
@@ -39,11 +41,11 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
   }
   flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
   flag_if_not_finite(out, *out.gir, "GIR (eq 20)");
-  const Scalar limit = spec.limit == WachLimit::cir ? *out.cir : *out.gir;
-  flag_if_undecided(out, p, spec.mu, limit, spec.limit == WachLimit::cir ? "CIR (eq 19)" : "GIR (eq 20)");
+  const Scalar limit = *cap;
+  flag_if_undecided(out, p, spec.mu, limit, on_cir ? "CIR (eq 19)" : "GIR (eq 20)");
   bool capped;
   {
-    const char* decision = spec.limit == WachLimit::cir ? decision_names::wach_cap_cir : decision_names::wach_cap_gir;
+    const char* decision = on_cir ? decision_names::wach_cap_cir : decision_names::wach_cap_gir;
     const DecisionName<Scalar> name(decision);
     capped = imposed_or(decision, spec.mu >= limit);
   }
