@@ -133,7 +133,7 @@ TEST_CASE("certified balls hold the exact fractions of every rational case", "[c
                                           std::pair{&s.impulse.cir, &q.impulse.cir}})
           if (*ball && *exact) tally.one(**ball, **exact);
         // What the balls could not decide on a rational case can only be an exact tie.
-        const auto ties = exact_ties(b.decisions[k], io::to_strategies<rational>(c)[k], q);
+        const auto ties = exact_ties(b.decisions[k], io::to_strategies<rational>(c)[k], q, s);
         for (const auto& d : b.decisions[k]) {
           INFO(d.name << ": " << d.detail);
           if (d.status == DecisionStatus::undecided) CHECK(std::find(ties.begin(), ties.end(), d.name) != ties.end());
@@ -179,7 +179,8 @@ TEST_CASE("with no sliding and a zero cap, the balls' undecided plane, axis and 
     for (std::size_t k = 0; k < 3; ++k) {
       INFO("engine " << static_cast<int>(engine) << ", strategy " << k);
       REQUIRE(x.results[k].solution);
-      const auto ties = exact_ties(b.decisions[k], io::to_strategies<rational>(c)[k], *x.results[k].solution);
+      const auto ties = exact_ties(b.decisions[k], io::to_strategies<rational>(c)[k], *x.results[k].solution,
+                                   b.analysis.solutions[k]);
       for (const char* name : expected[k]) {
         INFO(name);
         const auto d = std::find_if(b.decisions[k].begin(), b.decisions[k].end(), [&](const Decision& e) { return e.name == name; });
@@ -198,11 +199,55 @@ TEST_CASE("with no sliding and a zero cap, the balls' undecided plane, axis and 
           std::find_if(guarded.begin(), guarded.end(), [](const Decision& e) { return e.name == n::plane_direction; });
       REQUIRE(plane != guarded.end());
       guarded.insert(plane + 1, Decision{n::unnamed, DecisionStatus::undecided, "inserted by the test"});
-      CHECK(exact_ties(guarded, io::to_strategies<rational>(c)[k], *x.results[k].solution) ==
+      CHECK(exact_ties(guarded, io::to_strategies<rational>(c)[k], *x.results[k].solution, b.analysis.solutions[k]) ==
             std::vector<std::string>{n::plane_direction});
     }
   }
   CHECK(checked == 2 * 6);
+}
+
+TEST_CASE("a decision that asks several questions is a tie only where each one left open is exactly zero", "[certified]") {
+  // The 3-4-5 case above, pc-crash sticking (mu = 5 against a GIR of 0): V_rf's contact-plane part is
+  // exactly zero, as is V_ri's, and V_rf's normal part is -e V_rn, with e so small that at 24 bits its
+  // ball holds 0 too. The volume (Figure 2) asks of all three: two exact zeros and one nonzero left open
+  // is no tie, though either zero alone once made it one. The swerve asks whether the initial sliding
+  // is zero, which it is exactly: a tie. (The sliding along z, exactly zero in balls too, is no question.)
+  const io::CaseSpec c = io::read_case(R"({"name": "sticking, e = 1e-9, along a 3-4-5 normal", "units": "SI",
+    "vehicles": [
+      {"name": "A", "mass": 1450, "inertia": {"Ixx": 520, "Iyy": 2200, "Izz": 2400},
+       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [7.8, 10.4, 0],
+       "impulse_center": [1.2, 1.6, 0], "angular_velocity": [0, 0, 0]},
+      {"name": "B", "mass": 1700, "inertia": {"Ixx": 650, "Iyy": 2900, "Izz": 3100},
+       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [0, 0, 0],
+       "impulse_center": [-0.9, -1.2, 0], "angular_velocity": [0, 0, 0]}],
+    "contact": {"normal": [-3, -4, 0], "tangent": [4, -3, 0]}, "restitution": 0.000000001,
+    "strategy": [{"name": "pc-crash", "mu": 5}]})");
+  namespace n = decision_names;
+  int checked = 0;
+  for (Engine engine : kEngines) {
+    INFO("engine " << static_cast<int>(engine));
+    const ExactAnalysis x = exact_analyze(io::to_scene<rational>(c), io::to_strategies<rational>(c), engine);
+    REQUIRE(x.results[0].solution);
+    const auto& q = *x.results[0].solution;
+    REQUIRE(q.V_rf.x() != rational(0));
+    const BallBits bits(24);
+    const CertifiedAnalysis b = certified_analyze(io::to_scene<Ball>(c), io::to_strategies<Ball>(c), engine);
+    const auto& s = b.analysis.solutions[0];
+    REQUIRE(s.V_rf.x().contains_zero());
+    auto status = [&](const char* name) {
+      const auto d = std::find_if(b.decisions[0].begin(), b.decisions[0].end(), [&](const Decision& e) { return e.name == name; });
+      REQUIRE(d != b.decisions[0].end());
+      return d->status;
+    };
+    REQUIRE(status(n::volume) == DecisionStatus::undecided);
+    REQUIRE(status(n::swerve) == DecisionStatus::undecided);
+    const auto ties = exact_ties(b.decisions[0], io::to_strategies<rational>(c)[0], q, s);
+    CHECK(std::find(ties.begin(), ties.end(), n::volume) == ties.end());
+    CHECK(std::find(ties.begin(), ties.end(), n::swerve) != ties.end());
+    CHECK(std::find(ties.begin(), ties.end(), n::plane_direction) != ties.end());
+    ++checked;
+  }
+  CHECK(checked == 2);
 }
 
 TEST_CASE("certified balls hold the 100-digit solve of seeded random cases", "[certified]") {

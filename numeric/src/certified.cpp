@@ -80,9 +80,24 @@ bool chooses_impulse(const std::string& decision) {
 }
 
 std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, const Strategy<rational>& strategy,
-                                    const Solution<rational>& exact) {
+                                    const Solution<rational>& exact, const Solution<Ball>& balls) {
   namespace n = decision_names;
   const rational zero(0);
+  // A name that merges several zero questions (the volume's, the sliding's, the swerve's) is a tie only
+  // when each question its balls left open (a ball holding 0) is exactly zero: one exactly zero beside
+  // another undecided and not zero is no tie. `open` counts the questions left open.
+  int open = 0;
+  auto zero_if_open = [&](const Ball& b, bool exactly_zero) {
+    if (!b.contains_zero()) return true;
+    ++open;
+    return exactly_zero;
+  };
+  auto all_open_zero = [&](std::initializer_list<bool> each) {
+    bool all = open > 0;
+    for (bool e : each) all = all && e;
+    open = 0;
+    return all;
+  };
   // The cap a Wach solution used (eq 19 or 20), where the strategy is Wach's.
   auto wach_cap = [&]() -> const std::optional<rational>* {
     const auto* w = std::get_if<Wach<rational>>(&strategy);
@@ -116,16 +131,27 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
       tie = cap_is_zero();
     } else if (!std::strcmp(name, n::normal_impulse_sign))
       tie = exact.impulse.P_C.x() == zero;
-    else if (!std::strcmp(name, n::volume))
-      tie = exact.V_rf.x() == zero || exact.V_rf.y() == zero;
+    else if (!std::strcmp(name, n::volume))  // post_impact's axis_change along t, and V_rn after
+      tie = all_open_zero({zero_if_open(balls.V_ri.y(), exact.V_ri.y() == zero),
+                           zero_if_open(balls.V_rf.y(), exact.V_rf.y() == zero),
+                           zero_if_open(balls.V_rf.x(), exact.V_rf.x() == zero)});
     else if (!std::strcmp(name, n::z_sliding))
-      tie = exact.V_rf.z() == zero || exact.V_ri.z() == zero;
+      tie = all_open_zero({zero_if_open(balls.V_ri.z(), exact.V_ri.z() == zero),
+                           zero_if_open(balls.V_rf.z(), exact.V_rf.z() == zero)});
     else if (!std::strcmp(name, n::swerve)) {
-      // The swerve's comparisons are of |V_rf| in the contact plane and of the final sliding across and
-      // along the initial one, V_ri x V_rf and V_ri . V_rf there: rational.
+      // post_impact's questions in its order: the initial sliding, then (where it is not zero) the final,
+      // then (where that is not zero) the final sliding across and along the initial, V_ri x V_rf and
+      // V_ri . V_rf in the contact plane: rational.
       const rational across = exact.V_ri.y() * exact.V_rf.z() - exact.V_ri.z() * exact.V_rf.y();
       const rational along = exact.V_ri.y() * exact.V_rf.y() + exact.V_ri.z() * exact.V_rf.z();
-      tie = across == zero || along == zero || (exact.V_rf.y() == zero && exact.V_rf.z() == zero);
+      bool each = zero_if_open(balls.sliding_before, exact.V_ri.y() == zero && exact.V_ri.z() == zero);
+      if (!balls.sliding_before.contains_zero()) {
+        each = zero_if_open(balls.sliding_after, exact.V_rf.y() == zero && exact.V_rf.z() == zero) && each;
+        if (!balls.sliding_after.contains_zero() && balls.swerve_speed && balls.sliding_along)
+          each = zero_if_open(*balls.swerve_speed, across == zero) && zero_if_open(*balls.sliding_along, along == zero) &&
+                 each;
+      }
+      tie = all_open_zero({each});
     } else if (!std::strcmp(name, n::energy_loss_sign))
       tie = exact.energy_loss == zero;
     if (tie)

@@ -48,7 +48,7 @@ void recognize_ties(const CaseSpec& spec, Engine engine, CertifiedAnalysis& x) {
   for (std::size_t k = 0; k < x.decisions.size(); ++k) {
     const auto& r = exact->results[k];
     if (!r.solution) continue;
-    for (const auto& name : exact_ties(x.decisions[k], strategies[k], *r.solution)) {
+    for (const auto& name : exact_ties(x.decisions[k], strategies[k], *r.solution, x.analysis.solutions[k])) {
       const bool same = same_result_at_tie(name);
       for (auto& d : x.decisions[k])
         if (d.name == name) {

@@ -41,9 +41,10 @@ struct CertifiedAnalysis {
 CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Strategy<Ball>>& strategies,
                                     Engine engine = Engine::generated);
 
-// The names of `decisions` (of one strategy's certified solve) that are exact ties by the exact solution
-// of the same strategy: mu equal to the limit it is compared with; P_n, V_rn after, the energy loss, the
-// ratio used, the solution plane's direction or (on Wach's fallback axis) the cap exactly zero. Only
+// The names of `decisions` (of one strategy's certified solve, `balls` its solution) that are exact ties
+// by the exact solution of the same strategy: mu equal to the limit it is compared with; P_n, V_rn after,
+// the energy loss, the ratio used, the solution plane's direction or (on Wach's fallback axis) the cap
+// exactly zero; for a name that asks several such questions, each whose ball holds 0. Only
 // undecided decisions are looked at, and none after an undecided one that chooses the impulse and is no
 // tie: there the balls may have taken a branch the exact solve does not. The list's order is that of each
 // name's first comparison (DecisionLog::record), which is the order taken while each name that chooses
@@ -59,6 +60,6 @@ bool same_result_at_tie(const std::string& decision);
 // impulse and the states.
 bool chooses_impulse(const std::string& decision);
 std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, const Strategy<rational>& strategy,
-                                    const Solution<rational>& exact);
+                                    const Solution<rational>& exact, const Solution<Ball>& balls);
 
 }  // namespace impact3d
