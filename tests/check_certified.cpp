@@ -230,6 +230,7 @@ TEST_CASE("a decision that asks several questions is a tie only where each one l
     REQUIRE(x.results[0].solution);
     const auto& q = *x.results[0].solution;
     REQUIRE(q.V_rf.x() != rational(0));
+    REQUIRE(q.V_rf.y() == rational(0));  // what made the volume a tie before
     const BallBits bits(24);
     const CertifiedAnalysis b = certified_analyze(io::to_scene<Ball>(c), io::to_strategies<Ball>(c), engine);
     const auto& s = b.analysis.solutions[0];

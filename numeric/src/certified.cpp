@@ -3,6 +3,7 @@
 #include "impact3d/numeric/certified.hpp"
 
 #include <cstring>
+#include <initializer_list>
 #include <utility>
 
 namespace impact3d {
@@ -139,9 +140,9 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
       tie = all_open_zero({zero_if_open(balls.V_ri.z(), exact.V_ri.z() == zero),
                            zero_if_open(balls.V_rf.z(), exact.V_rf.z() == zero)});
     else if (!std::strcmp(name, n::swerve)) {
-      // post_impact's questions in its order: the initial sliding, then (where it is not zero) the final,
-      // then (where that is not zero) the final sliding across and along the initial, V_ri x V_rf and
-      // V_ri . V_rf in the contact plane: rational.
+      // post_impact's questions: the initial sliding, then (where it is not zero) the final, then (where
+      // that is not zero) the final sliding across and along the initial, V_ri x V_rf and V_ri . V_rf in
+      // the contact plane: rational.
       const rational across = exact.V_ri.y() * exact.V_rf.z() - exact.V_ri.z() * exact.V_rf.y();
       const rational along = exact.V_ri.y() * exact.V_rf.y() + exact.V_ri.z() * exact.V_rf.z();
       bool each = zero_if_open(balls.sliding_before, exact.V_ri.y() == zero && exact.V_ri.z() == zero);
