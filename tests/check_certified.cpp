@@ -96,6 +96,21 @@ bool meets(const Ball& b, const mp::float100& x100, const mp::float100& allowanc
   return arb_overlaps(b.get(), x.get());
 }
 
+// Both impulse centres on the normal line, a 3-4-5 direction (the frame's entries are not dyadic, so the
+// balls carry radii), the bodies approaching along it with no sliding: K n is parallel to n.
+io::CaseSpec case_on_345_normal(const std::string& restitution, const std::string& strategies) {
+  return io::read_case(R"({"name": "no sliding along a 3-4-5 normal", "units": "SI",
+    "vehicles": [
+      {"name": "A", "mass": 1450, "inertia": {"Ixx": 520, "Iyy": 2200, "Izz": 2400},
+       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [7.8, 10.4, 0],
+       "impulse_center": [1.2, 1.6, 0], "angular_velocity": [0, 0, 0]},
+      {"name": "B", "mass": 1700, "inertia": {"Ixx": 650, "Iyy": 2900, "Izz": 3100},
+       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [0, 0, 0],
+       "impulse_center": [-0.9, -1.2, 0], "angular_velocity": [0, 0, 0]}],
+    "contact": {"normal": [-3, -4, 0], "tangent": [4, -3, 0]}, "restitution": )" + restitution + R"(,
+    "strategy": )" + strategies + "}");
+}
+
 }  // namespace
 
 TEST_CASE("certified balls hold the exact fractions of every rational case", "[certified]") {
@@ -146,24 +161,13 @@ TEST_CASE("certified balls hold the exact fractions of every rational case", "[c
 }
 
 TEST_CASE("with no sliding and a zero cap, the balls' undecided plane, axis and ratio are exact ties", "[certified]") {
-  // A constructed rational case: both impulse centres on the normal line (a 3-4-5 direction, so that the
-  // frame's entries are not dyadic and the balls carry radii) and the bodies approaching along it. Then
-  // K n is parallel to n (each lever arm is along n), so K_tn = K_zn = 0 and, with no sliding, both caps
-  // are exactly zero (eqs 19-20), as are the ratio Wach uses and, for pc-crash, the Full Impact's
-  // contact-plane part. The balls hold 0 with a radius and cannot decide; exact arithmetic says each is
-  // a tie. Each undecided decision named below must be among the undecided, or the case did not reach
-  // what it tests.
-  const io::CaseSpec c = io::read_case(R"({"name": "no sliding along a 3-4-5 normal", "units": "SI",
-    "vehicles": [
-      {"name": "A", "mass": 1450, "inertia": {"Ixx": 520, "Iyy": 2200, "Izz": 2400},
-       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [7.8, 10.4, 0],
-       "impulse_center": [1.2, 1.6, 0], "angular_velocity": [0, 0, 0]},
-      {"name": "B", "mass": 1700, "inertia": {"Ixx": 650, "Iyy": 2900, "Izz": 3100},
-       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [0, 0, 0],
-       "impulse_center": [-0.9, -1.2, 0], "angular_velocity": [0, 0, 0]}],
-    "contact": {"normal": [-3, -4, 0], "tangent": [4, -3, 0]}, "restitution": 0.1,
-    "strategy": [{"name": "wach", "mu": 0.3, "limit": "cir"}, {"name": "wach", "mu": 0, "limit": "gir"},
-                 {"name": "pc-crash", "mu": 0.5}]})");
+  // A constructed rational case (case_on_345_normal): each lever arm along n, so K n is parallel to n,
+  // K_tn = K_zn = 0 and, with no sliding, both caps are exactly zero (eqs 19-20), as are the ratio Wach
+  // uses and, for pc-crash, the Full Impact's contact-plane part. The balls hold 0 with a radius and
+  // cannot decide; exact arithmetic says each is a tie. Each undecided decision named below must be
+  // among the undecided, or the case did not reach what it tests.
+  const io::CaseSpec c = case_on_345_normal("0.1", R"([{"name": "wach", "mu": 0.3, "limit": "cir"},
+    {"name": "wach", "mu": 0, "limit": "gir"}, {"name": "pc-crash", "mu": 0.5}])");
   namespace n = decision_names;
   // The ratio Wach uses at mu = 0 is the cap's ball only when the cap's (undecided) comparison caps it;
   // else it is mu's exact zero, a tie by the balls themselves: which, the engine's midpoint says. At
@@ -212,16 +216,7 @@ TEST_CASE("a decision that asks several questions is a tie only where each one l
   // ball holds 0 too. The volume (Figure 2) asks of all three: two exact zeros and one nonzero left open
   // is no tie, though either zero alone once made it one. The swerve asks whether the initial sliding
   // is zero, which it is exactly: a tie. (The sliding along z, exactly zero in balls too, is no question.)
-  const io::CaseSpec c = io::read_case(R"({"name": "sticking, e = 1e-9, along a 3-4-5 normal", "units": "SI",
-    "vehicles": [
-      {"name": "A", "mass": 1450, "inertia": {"Ixx": 520, "Iyy": 2200, "Izz": 2400},
-       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [7.8, 10.4, 0],
-       "impulse_center": [1.2, 1.6, 0], "angular_velocity": [0, 0, 0]},
-      {"name": "B", "mass": 1700, "inertia": {"Ixx": 650, "Iyy": 2900, "Izz": 3100},
-       "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [0, 0, 0],
-       "impulse_center": [-0.9, -1.2, 0], "angular_velocity": [0, 0, 0]}],
-    "contact": {"normal": [-3, -4, 0], "tangent": [4, -3, 0]}, "restitution": 0.000000001,
-    "strategy": [{"name": "pc-crash", "mu": 5}]})");
+  const io::CaseSpec c = case_on_345_normal("0.000000001", R"([{"name": "pc-crash", "mu": 5}])");
   namespace n = decision_names;
   int checked = 0;
   for (Engine engine : kEngines) {
