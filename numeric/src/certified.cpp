@@ -3,7 +3,6 @@
 #include "impact3d/numeric/certified.hpp"
 
 #include <cstring>
-#include <initializer_list>
 #include <utility>
 
 namespace impact3d {
@@ -80,25 +79,33 @@ bool chooses_impulse(const std::string& decision) {
   return true;  // the regime, the cap, the plane, and whatever is not named: assume it chose
 }
 
+namespace {
+
+// One zero question a decision asked: its ball, and whether the exact value is zero.
+struct ZeroQuestion {
+  const Ball* ball;
+  bool exactly_zero;
+};
+
+// A name that merges several zero questions (the volume's, the sliding's, the swerve's) is a tie only
+// when its balls left at least one open (a ball holding 0) and each one left open is exactly zero: one
+// exactly zero beside another undecided and not zero is no tie.
+bool open_questions_zero(const std::vector<ZeroQuestion>& questions) {
+  bool any_open = false;
+  for (const auto& q : questions) {
+    if (!q.ball->contains_zero()) continue;
+    if (!q.exactly_zero) return false;
+    any_open = true;
+  }
+  return any_open;
+}
+
+}  // namespace
+
 std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, const Strategy<rational>& strategy,
                                     const Solution<rational>& exact, const Solution<Ball>& balls) {
   namespace n = decision_names;
   const rational zero(0);
-  // A name that merges several zero questions (the volume's, the sliding's, the swerve's) is a tie only
-  // when each question its balls left open (a ball holding 0) is exactly zero: one exactly zero beside
-  // another undecided and not zero is no tie. `open` counts the questions left open.
-  int open = 0;
-  auto zero_if_open = [&](const Ball& b, bool exactly_zero) {
-    if (!b.contains_zero()) return true;
-    ++open;
-    return exactly_zero;
-  };
-  auto all_open_zero = [&](std::initializer_list<bool> each) {
-    bool all = open > 0;
-    for (bool e : each) all = all && e;
-    open = 0;
-    return all;
-  };
   // The cap a Wach solution used (eq 19 or 20), where the strategy is Wach's.
   auto wach_cap = [&]() -> const std::optional<rational>* {
     const auto* w = std::get_if<Wach<rational>>(&strategy);
@@ -133,26 +140,26 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
     } else if (!std::strcmp(name, n::normal_impulse_sign))
       tie = exact.impulse.P_C.x() == zero;
     else if (!std::strcmp(name, n::volume))  // post_impact's axis_change along t, and V_rn after
-      tie = all_open_zero({zero_if_open(balls.V_ri.y(), exact.V_ri.y() == zero),
-                           zero_if_open(balls.V_rf.y(), exact.V_rf.y() == zero),
-                           zero_if_open(balls.V_rf.x(), exact.V_rf.x() == zero)});
+      tie = open_questions_zero({{&balls.V_ri.y(), exact.V_ri.y() == zero},
+                                 {&balls.V_rf.y(), exact.V_rf.y() == zero},
+                                 {&balls.V_rf.x(), exact.V_rf.x() == zero}});
     else if (!std::strcmp(name, n::z_sliding))
-      tie = all_open_zero({zero_if_open(balls.V_ri.z(), exact.V_ri.z() == zero),
-                           zero_if_open(balls.V_rf.z(), exact.V_rf.z() == zero)});
+      tie = open_questions_zero({{&balls.V_ri.z(), exact.V_ri.z() == zero}, {&balls.V_rf.z(), exact.V_rf.z() == zero}});
     else if (!std::strcmp(name, n::swerve)) {
       // post_impact's questions: the initial sliding, then (where it is not zero) the final, then (where
       // that is not zero) the final sliding across and along the initial, V_ri x V_rf and V_ri . V_rf in
       // the contact plane: rational.
       const rational across = exact.V_ri.y() * exact.V_rf.z() - exact.V_ri.z() * exact.V_rf.y();
       const rational along = exact.V_ri.y() * exact.V_rf.y() + exact.V_ri.z() * exact.V_rf.z();
-      bool each = zero_if_open(balls.sliding_before, exact.V_ri.y() == zero && exact.V_ri.z() == zero);
+      std::vector<ZeroQuestion> asked{{&balls.sliding_before, exact.V_ri.y() == zero && exact.V_ri.z() == zero}};
       if (!balls.sliding_before.contains_zero()) {
-        each = zero_if_open(balls.sliding_after, exact.V_rf.y() == zero && exact.V_rf.z() == zero) && each;
-        if (!balls.sliding_after.contains_zero() && balls.swerve_speed && balls.sliding_along)
-          each = zero_if_open(*balls.swerve_speed, across == zero) && zero_if_open(*balls.sliding_along, along == zero) &&
-                 each;
+        asked.push_back({&balls.sliding_after, exact.V_rf.y() == zero && exact.V_rf.z() == zero});
+        if (!balls.sliding_after.contains_zero() && balls.swerve_speed && balls.sliding_along) {
+          asked.push_back({&*balls.swerve_speed, across == zero});
+          asked.push_back({&*balls.sliding_along, along == zero});
+        }
       }
-      tie = all_open_zero({each});
+      tie = open_questions_zero(asked);
     } else if (!std::strcmp(name, n::energy_loss_sign))
       tie = exact.energy_loss == zero;
     if (tie)
