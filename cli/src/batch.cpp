@@ -2,7 +2,7 @@
 // in input order while the next is solved, so memory stays flat in the number of rows and output appears
 // as it is done. Each row is the document `solve --format json` prints for its case, on one line, with
 // "line" first; a row that cannot be read or solved becomes {"line": i, "error": "..."} and the run
-// goes on. Output is written with write(2) in whole rows only. SIGINT or SIGTERM stop the run: the rows
+// goes on. Output is written in whole rows only (row_output.hpp). SIGINT or SIGTERM stop the run: the rows
 // in hand are finished and written up to the first not started, every row written is whole, and the
 // summary counts them; a second signal ends the program at once.
 #include "batch.hpp"
@@ -11,7 +11,6 @@
 #include <malloc.h>
 #include <poll.h>
 #include <pthread.h>
-#include <limits.h>
 #include <sys/stat.h>
 #include <sys/uio.h>
 #include <unistd.h>
@@ -43,6 +42,7 @@
 #include "impact3d/io/strategy_option.hpp"
 #include "batch_csv.hpp"
 #include "helper_thread.hpp"
+#include "row_output.hpp"
 #include "user_error.hpp"
 
 namespace impact3d::cli {
@@ -249,43 +249,16 @@ int open_output(const std::string& path) {
   return fd;
 }
 
-// All of `text`, which holds whole rows; false when the output is gone (a closed pipe).
-bool write_all(int fd, const std::string& text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
-// The first `n` rows' texts in order, by writev: no copy into one buffer.
-bool write_rows(int fd, const std::vector<Solved>& rows, std::size_t n) {
+// The first `n` rows' texts in order (their head and document pieces, not copied here).
+bool write_rows(RowOutput& output, const std::vector<Solved>& rows, std::size_t n) {
   std::vector<iovec> iov;
-  for (std::size_t k = 0; k < n;) {
-    iov.clear();
-    std::size_t j = k;
-    for (; j < n && iov.size() + 2 <= static_cast<std::size_t>(IOV_MAX); ++j) {
-      const Solved& r = rows[j];
-      if (r.head_size) iov.push_back({const_cast<char*>(r.head.data()), r.head_size});
-      iov.push_back({const_cast<char*>(r.text.data()) + r.from, r.text.size() - r.from});
-    }
-    k = j;
-    for (std::size_t first = 0; first < iov.size();) {  // through partial writes
-      const ssize_t w = ::writev(fd, iov.data() + first, static_cast<int>(iov.size() - first));
-      if (w < 0 && errno == EINTR) continue;
-      if (w < 0 || (w == 0 && iov[first].iov_len > 0)) return false;
-      auto left = static_cast<std::size_t>(w);
-      while (first < iov.size() && left >= iov[first].iov_len) left -= iov[first++].iov_len;
-      if (first < iov.size()) {
-        iov[first].iov_base = static_cast<char*>(iov[first].iov_base) + left;
-        iov[first].iov_len -= left;
-      }
-    }
+  iov.reserve(2 * n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const Solved& r = rows[j];
+    if (r.head_size) iov.push_back({const_cast<char*>(r.head.data()), r.head_size});
+    iov.push_back({const_cast<char*>(r.text.data()) + r.from, r.text.size() - r.from});
   }
-  return true;
+  return output.write(iov);
 }
 
 class Progress {
@@ -354,13 +327,18 @@ int batch(const BatchOptions& o) {
       formats.columns = &*columns;
     }
   }
-  if (formats.csv_out && !write_all(out, io::result_csv_header())) output_lost = true;
+  RowOutput output(out, out != STDOUT_FILENO);
+  if (formats.csv_out) {
+    const std::string header = io::result_csv_header();
+    const iovec piece{const_cast<char*>(header.data()), header.size()};
+    if (!output.write({&piece, 1})) output_lost = true;
+  }
   // Not over rows being written to the same terminal.
   Progress progress(::isatty(STDERR_FILENO) == 1 && ::isatty(out) != 1, total);
   long read = 0, solved = 0, rejected = 0;
   std::vector<Row> rows;
   std::vector<char> done;
-  // A block's rows are written by another thread, straight from their strings, while the next block
+  // A block's rows are written by another thread (row_output.hpp), while the next block
   // is solved.
   std::vector<Solved> results, writing;
   std::size_t to_write = 0;
@@ -437,7 +415,7 @@ int batch(const BatchOptions& o) {
     if (output_lost) break;
     std::swap(results, writing);
     to_write = written;
-    writer_thread->start([&] { wrote = write_rows(out, writing, to_write); });
+    writer_thread->start([&] { wrote = write_rows(output, writing, to_write); });
     progress.update(read, reader.bytes());
   }
   wait_write();
