@@ -5,7 +5,9 @@
 // midway leaves only whole rows.
 #include <catch2/catch.hpp>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -345,6 +347,25 @@ TEST_CASE("batch writes a file past 64 MiB, its end straight to the disk, byte f
   REQUIRE(rows.size() == static_cast<std::size_t>(kRows));
   CHECK(json::parse(rows.back()).at("error").is_string());
   CHECK(json::parse(rows[kRows - 2]).at("line") == kRows - 1);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("batch whose output cannot be written says why and exits 3", "[batch]") {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-full-{}", ::getpid());
+  fs::create_directories(dir);
+  const fs::path cases = dir / "cases.jsonl";
+  std::ofstream(cases, std::ios::binary) << json::parse(slurp(fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json")).dump() << "\n";
+  // /dev/full refuses every write with ENOSPC, as a full disk does.
+  const Run rows = run_argv({"batch", cases.string(), "-o", "/dev/full"});
+  CHECK(rows.status == 3);
+  CHECK(rows.out.empty());
+  CHECK(rows.err == "impact3d: batch: 1 rows read, 1 solved, 0 rejected (the output could not be written: " +
+                        std::string(std::strerror(ENOSPC)) + ")\n");
+  // The CSV header is the first write: no row is read.
+  const Run csv = run_argv({"batch", cases.string(), "--format", "csv", "-o", "/dev/full"});
+  CHECK(csv.status == 3);
+  CHECK(csv.err == "impact3d: batch: 0 rows read, 0 solved, 0 rejected (the output could not be written: " +
+                       std::string(std::strerror(ENOSPC)) + ")\n");
   fs::remove_all(dir);
 }
 

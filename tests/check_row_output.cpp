@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -199,4 +200,20 @@ TEST_CASE("rows to a pipe are written through it, never directly", "[batch]") {
   ::close(p[0]);
   got.resize(n);
   CHECK(got == expected);
+}
+
+TEST_CASE("a write that fails says why, and nothing is written after it", "[batch]") {
+  // /dev/full refuses every write with ENOSPC, as a full disk does.
+  const int fd = ::open("/dev/full", O_WRONLY | O_CLOEXEC);
+  REQUIRE(fd >= 0);
+  RowOutput out(fd, true, 0);
+  std::string row = "{\"line\": 1}\n";
+  const iovec piece{row.data(), row.size()};
+  CHECK(out.error() == 0);
+  CHECK_FALSE(out.write({&piece, 1}));
+  CHECK(out.error() == ENOSPC);
+  CHECK_FALSE(out.write({&piece, 1}));
+  CHECK_FALSE(out.write({}));
+  CHECK(out.error() == ENOSPC);
+  ::close(fd);
 }

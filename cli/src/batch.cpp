@@ -421,9 +421,13 @@ int batch(const BatchOptions& o) {
   wait_write();
   progress.finish();
   if (in != STDIN_FILENO) ::close(in);
-  if (out != STDOUT_FILENO && ::close(out) != 0) output_lost = true;
-  std::fprintf(stderr, "impact3d: batch: %ld rows read, %ld solved, %ld rejected%s\n", read, solved, rejected,
-               stop_signal ? " (interrupted: the rows written are whole)" : output_lost ? " (the output was closed)" : "");
+  int lost_errno = output.error();
+  if (out != STDOUT_FILENO && ::close(out) != 0 && !output_lost) output_lost = true, lost_errno = errno;
+  std::string why;
+  if (stop_signal) why = " (interrupted: the rows written are whole)";
+  else if (output_lost && lost_errno == EPIPE) why = " (the output was closed)";
+  else if (output_lost) why = fmt::format(" (the output could not be written: {})", std::strerror(lost_errno));
+  std::fprintf(stderr, "impact3d: batch: %ld rows read, %ld solved, %ld rejected%s\n", read, solved, rejected, why.c_str());
   if (stop_signal) return 128 + stop_signal;
   if (output_lost || internal) return 3;
   return rejected ? 1 : 0;

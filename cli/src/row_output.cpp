@@ -58,7 +58,9 @@ bool RowOutput::write(std::span<const iovec> pieces) {
     // was), whether the direct writes stay on or the file system refuses them.
     staging_ = direct_;
   }
+  errno = 0;
   lost_ = !(staging_ ? write_staged(pieces) : write_cached(pieces));
+  if (lost_) error_ = errno != 0 ? errno : EIO;  // a write of no bytes sets none
   return !lost_;
 }
 
@@ -113,7 +115,7 @@ bool RowOutput::flush_pages(std::size_t bytes) {
   while (bytes > 0) {
     const ssize_t w = ::pwrite(fd_, p, bytes, static_cast<off_t>(at));
     if (w < 0 && errno == EINTR) continue;
-    if (w < 0 && errno == EINVAL && direct_) {
+    if (w < 0 && (errno == EINVAL || errno == EOPNOTSUPP) && direct_) {
       if (!set_direct(false)) return false;
       direct_ = false;  // and for every later write
       continue;

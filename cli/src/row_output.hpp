@@ -1,9 +1,9 @@
 // Where `batch` writes its rows: whole rows at each call, to a pipe, a terminal or a file. A file the
 // program opened itself goes past its first `direct_after` bytes straight to the disk (O_DIRECT), not
 // through the page cache: a batch writes gigabytes that nobody reads back at once, and copying them into
-// the cache cost one to two seconds of system time a gigabyte on the machine BENCHMARKS.md measures,
-// on cores the solvers need. Direct writes take whole pages from a buffer of whole pages; the last
-// page's rows go through the cache, so that after every call the file ends at a whole row, as before.
+// the cache cost one to two and a half seconds of system time a gigabyte, on cores the solvers need, on
+// the machine BENCHMARKS.md measures. Direct writes take whole pages from a buffer of whole pages; the
+// last page's rows go through the cache, so that after every call the file ends at a whole row.
 // A file system that refuses direct writes (tmpfs before Linux 6.6, some FUSE file systems) is written
 // through the cache throughout.
 #pragma once
@@ -30,6 +30,8 @@ class RowOutput {
   // The pieces in order, together whole rows; false when the output is gone (a closed pipe, a full
   // disk), and for every write after.
   bool write(std::span<const iovec> pieces);
+  // The errno of the write that failed (EPIPE: the reader went away), or 0.
+  int error() const { return error_; }
   // Whether whole pages now go to the disk directly.
   bool direct() const { return direct_; }
 
@@ -44,6 +46,7 @@ class RowOutput {
   bool may_direct_;
   std::uint64_t direct_after_;
   bool lost_ = false;
+  int error_ = 0;
   bool staging_ = false;  // writes go through the stage
   bool direct_ = false;   // and from it to the disk directly
   std::uint64_t written_ = 0;  // bytes in the file
