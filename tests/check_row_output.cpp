@@ -4,10 +4,12 @@
 // (so it ends at a whole row), whatever the pieces' sizes, their number (beyond IOV_MAX) and where the
 // switch falls.
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -203,17 +205,48 @@ TEST_CASE("rows to a pipe are written through it, never directly", "[batch]") {
 }
 
 TEST_CASE("a write that fails says why, and nothing is written after it", "[batch]") {
-  // /dev/full refuses every write with ENOSPC, as a full disk does.
-  const int fd = ::open("/dev/full", O_WRONLY | O_CLOEXEC);
-  REQUIRE(fd >= 0);
-  RowOutput out(fd, true, 0);
-  std::string row = "{\"line\": 1}\n";
+  std::string row = "{\"line\": 1}\n";  // 12 bytes
   const iovec piece{row.data(), row.size()};
-  CHECK(out.error() == 0);
-  CHECK_FALSE(out.write({&piece, 1}));
-  CHECK(out.error() == ENOSPC);
-  CHECK_FALSE(out.write({&piece, 1}));
-  CHECK_FALSE(out.write({}));
-  CHECK(out.error() == ENOSPC);
-  ::close(fd);
+  SECTION("a full disk: /dev/full refuses every write with ENOSPC") {
+    const int fd = ::open("/dev/full", O_WRONLY | O_CLOEXEC);
+    REQUIRE(fd >= 0);
+    RowOutput out(fd, true, 0);
+    CHECK(out.error() == 0);
+    CHECK_FALSE(out.write({&piece, 1}));
+    CHECK(out.error() == ENOSPC);
+    ::close(fd);
+  }
+  SECTION("a reader gone away: EPIPE") {
+    int p[2];
+    REQUIRE(::pipe(p) == 0);
+    ::close(p[0]);
+    const auto previous = std::signal(SIGPIPE, SIG_IGN);
+    RowOutput out(p[1], false);
+    CHECK_FALSE(out.write({&piece, 1}));
+    std::signal(SIGPIPE, previous);
+    CHECK(out.error() == EPIPE);
+    ::close(p[1]);
+  }
+  SECTION("a file over its size limit (EFBIG), then under it again: nothing more is written") {
+    const Scratch scratch;
+    const fs::path file = scratch.dir / "rows";
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    REQUIRE(fd >= 0);
+    RowOutput out(fd, true, 0);
+    rlimit saved{};
+    REQUIRE(::getrlimit(RLIMIT_FSIZE, &saved) == 0);
+    const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit small{20, saved.rlim_max};
+    REQUIRE(::setrlimit(RLIMIT_FSIZE, &small) == 0);
+    const bool first = out.write({&piece, 1});    // 12 bytes: within the limit
+    const bool second = out.write({&piece, 1});   // 8 more taken, then EFBIG
+    ::setrlimit(RLIMIT_FSIZE, &saved);
+    std::signal(SIGXFSZ, previous);
+    CHECK(first);
+    CHECK_FALSE(second);
+    CHECK(out.error() == EFBIG);
+    CHECK_FALSE(out.write({&piece, 1}));  // the limit lifted, but the file is not what the rows were
+    CHECK(fs::file_size(file) == 20);
+    ::close(fd);
+  }
 }

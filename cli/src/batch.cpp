@@ -422,7 +422,10 @@ int batch(const BatchOptions& o) {
   progress.finish();
   if (in != STDIN_FILENO) ::close(in);
   int lost_errno = output.error();
-  if (out != STDOUT_FILENO && ::close(out) != 0 && !output_lost) output_lost = true, lost_errno = errno;
+  if (out != STDOUT_FILENO && ::close(out) != 0 && !output_lost) {
+    output_lost = true;
+    lost_errno = errno;
+  }
   std::string why;
   if (stop_signal) why = " (interrupted: the rows written are whole)";
   else if (output_lost && lost_errno == EPIPE) why = " (the output was closed)";

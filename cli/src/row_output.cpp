@@ -42,6 +42,12 @@ RowOutput::RowOutput(int fd, bool own, std::uint64_t direct_after) : fd_(fd), di
 
 RowOutput::~RowOutput() = default;
 
+// Kept where the call fails: a later call (a destructor's free) may set errno again.
+bool RowOutput::failed(int error) {
+  error_ = error;
+  return false;
+}
+
 bool RowOutput::set_direct(bool on) {
   const int flags = ::fcntl(fd_, F_GETFL);
   return flags >= 0 && ::fcntl(fd_, F_SETFL, on ? flags | O_DIRECT : flags & ~O_DIRECT) == 0;
@@ -58,9 +64,7 @@ bool RowOutput::write(std::span<const iovec> pieces) {
     // was), whether the direct writes stay on or the file system refuses them.
     staging_ = direct_;
   }
-  errno = 0;
   lost_ = !(staging_ ? write_staged(pieces) : write_cached(pieces));
-  if (lost_) error_ = errno != 0 ? errno : EIO;  // a write of no bytes sets none
   return !lost_;
 }
 
@@ -74,7 +78,8 @@ bool RowOutput::write_cached(std::span<const iovec> pieces) {
     for (std::size_t first = 0; first < iov.size();) {
       const ssize_t w = ::writev(fd_, iov.data() + first, static_cast<int>(iov.size() - first));
       if (w < 0 && errno == EINTR) continue;
-      if (w < 0 || (w == 0 && iov[first].iov_len > 0)) return false;
+      if (w < 0) return failed(errno);
+      if (w == 0 && iov[first].iov_len > 0) return failed(EIO);  // no bytes taken, and no reason given
       auto left = static_cast<std::size_t>(w);
       written_ += left;
       while (first < iov.size() && left >= iov[first].iov_len) left -= iov[first++].iov_len;
@@ -116,11 +121,12 @@ bool RowOutput::flush_pages(std::size_t bytes) {
     const ssize_t w = ::pwrite(fd_, p, bytes, static_cast<off_t>(at));
     if (w < 0 && errno == EINTR) continue;
     if (w < 0 && (errno == EINVAL || errno == EOPNOTSUPP) && direct_) {
-      if (!set_direct(false)) return false;
+      if (!set_direct(false)) return failed(errno);
       direct_ = false;  // and for every later write
       continue;
     }
-    if (w <= 0) return false;
+    if (w < 0) return failed(errno);
+    if (w == 0) return failed(EIO);  // no bytes taken, and no reason given
     p += w, at += static_cast<std::uint64_t>(w), bytes -= static_cast<std::size_t>(w);
   }
   return true;
@@ -147,7 +153,7 @@ bool RowOutput::write_staged(std::span<const iovec> pieces) {
   if (staged_ > 0) {
     // The last page's rows through the cache (its next direct write will take the page again, whole).
     const bool was_direct = direct_;
-    if (was_direct && !set_direct(false)) return false;
+    if (was_direct && !set_direct(false)) return failed(errno);
     direct_ = false;
     if (!flush_pages(staged_)) return false;
     direct_ = was_direct && set_direct(true);

@@ -41,6 +41,7 @@ class RowOutput {
   bool flush_pages(std::size_t bytes);
   void keep_tail(std::span<const iovec> pieces);
   bool set_direct(bool on);
+  bool failed(int error);
 
   int fd_;
   bool may_direct_;
