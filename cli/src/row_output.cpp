@@ -55,7 +55,7 @@ bool RowOutput::set_direct(bool on) {
 
 bool RowOutput::write(std::span<const iovec> pieces) {
   // After a failed write the bookkeeping is not the file's: nothing more is written.
-  if (lost_) return false;
+  if (error_ != 0) return false;
   if (pieces.empty()) return true;
   if (!staging_ && may_direct_ && written_ >= direct_after_) {
     may_direct_ = false;  // tried once
@@ -64,8 +64,7 @@ bool RowOutput::write(std::span<const iovec> pieces) {
     // was), whether the direct writes stay on or the file system refuses them.
     staging_ = direct_;
   }
-  lost_ = !(staging_ ? write_staged(pieces) : write_cached(pieces));
-  return !lost_;
+  return staging_ ? write_staged(pieces) : write_cached(pieces);  // a failure sets error_ (failed())
 }
 
 // Through partial writes, IOV_MAX pieces at a time.

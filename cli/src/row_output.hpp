@@ -46,8 +46,7 @@ class RowOutput {
   int fd_;
   bool may_direct_;
   std::uint64_t direct_after_;
-  bool lost_ = false;
-  int error_ = 0;
+  int error_ = 0;  // set once, by the first failure: every write after it fails
   bool staging_ = false;  // writes go through the stage
   bool direct_ = false;   // and from it to the disk directly
   std::uint64_t written_ = 0;  // bytes in the file
