@@ -287,18 +287,31 @@ TEST_CASE("batch refuses bad options as solve does, and a line longer than a cas
   fs::remove_all(dir);
 }
 
+namespace {
+
+// A file named by -o is written as a hidden temporary beside it (.NAME.*.tmp), renamed over the name when
+// the run ends: its bytes so far, while the run goes on.
+std::string temporary_of(const fs::path& target) {
+  const std::string prefix = "." + target.filename().string() + ".";
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(target.parent_path(), ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind(prefix, 0) == 0 && name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0) return slurp(e.path());
+  }
+  return {};
+}
+
+}  // namespace
+
 TEST_CASE("batch stopped midway by SIGTERM leaves only whole rows, numbered from the first", "[batch]") {
   const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-kill-{}", ::getpid());
   fs::create_directories(dir);
   const Input in = make_input(dir, 300);
   const fs::path out_file = dir / "out.jsonl";
-  // Stopped once the first block is written: the handler is installed and some rows are out.
+  // Stopped once the first block is written (into the temporary): the handler is installed and some
+  // rows are out. The stopped run puts the file in place, holding the rows written.
   const Run r = run_program(IMPACT3D_CLI, {"batch", in.path.string(), "-o", out_file.string(), "--jobs", "2"}, "", "", 120,
-                            2048, [&] {
-                              std::error_code ec;
-                              const auto size = fs::file_size(out_file, ec);
-                              return !ec && size > 0;
-                            });
+                            2048, [&] { return !temporary_of(out_file).empty(); });
   INFO(r.err);
   CHECK(r.status == 128 + SIGTERM);
   CHECK(r.err.find("interrupted") != std::string::npos);
@@ -514,7 +527,7 @@ TEST_CASE("batch answers a case piped in before the next arrives", "[batch]") {
     if (fd < 0) return;
     if (::write(fd, one_case.data(), one_case.size()) == static_cast<ssize_t>(one_case.size()))
       for (int ms = 0; ms < 20000 && !answered_first; ms += 10) {
-        answered_first = slurp(out).find('\n') != std::string::npos;
+        answered_first = temporary_of(out).find('\n') != std::string::npos;
         ::usleep(10000);
       }
     ::close(fd);
@@ -524,6 +537,7 @@ TEST_CASE("batch answers a case piped in before the next arrives", "[batch]") {
   CHECK(r.status == 0);
   CHECK(answered_first);
   CHECK(lines_of(slurp(out)).size() == 1);
+  CHECK(temporary_of(out).empty());  // renamed over the name at the end
   fs::remove_all(dir);
 }
 

@@ -183,7 +183,8 @@ TEST_CASE("bad uncertainty files and options: one line naming the field, nothing
   CHECK(c.out.empty());
   CHECK_THAT(c.err, Catch::StartsWith("impact3d: error: " + bad_case.string() + ": $"));
   for (const std::vector<std::string>& args :
-       {std::vector<std::string>{"--samples", "0"}, {"--samples", "10000001"}, {"--precision", "exact"}, {"--jobs", "0"}}) {
+       {std::vector<std::string>{"--samples", "0"}, {"--samples", "10000001"}, {"--precision", "exact"}, {"--jobs", "0"},
+        {"--seed", "-1"}, {"--seed", "18446744073709551616"}, {"--seed", "1e3"}, {"--seed", ""}}) {
     std::vector<std::string> all = {"montecarlo", kCase, "--uncertainty", kUncertainty};
     all.insert(all.end(), args.begin(), args.end());
     const Run u = run_program(IMPACT3D_CLI, all);
@@ -195,7 +196,63 @@ TEST_CASE("bad uncertainty files and options: one line naming the field, nothing
                                                     "--samples-out", (dir / "no" / "such" / "dir.csv").string()});
   CHECK(unwritable.status == 1);
   CHECK(unwritable.out.empty());
-  CHECK_THAT(unwritable.err, Catch::StartsWith("impact3d: error: --samples-out: cannot write"));
+  CHECK(unwritable.err == "impact3d: error: --samples-out: " + (dir / "no" / "such" / "dir.csv").string() +
+                              ": cannot write the file: its directory cannot be opened (No such file or directory)\n");
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a run that cannot solve a sample is refused up front, one that solved none fails, one that solved few warns") {
+  const fs::path dir = scratch();
+  const auto run_with = [&](const std::string& name, const std::string& file, std::vector<std::string> more = {}) {
+    const fs::path u = dir / name;
+    std::ofstream(u) << file;
+    std::vector<std::string> args = {"montecarlo", kCase, "--uncertainty", u.string()};
+    args.insert(args.end(), more.begin(), more.end());
+    return std::make_pair(u.string(), run_program(IMPACT3D_CLI, args));
+  };
+  // An off-diagonal inertia entry varied alone is never symmetric: refused before any sample.
+  const auto [u1, alone] = run_with("inertia.json", R"({"samples": 50, "inputs": [{"path": "$.vehicles[0].inertia[0][1]", "distribution": "uniform", "min": 10, "max": 20}]})");
+  CHECK(alone.status == 1);
+  CHECK(alone.out.empty());
+  CHECK(alone.err == "impact3d: error: " + u1 +
+                         ": $.inputs[0].distribution: the uniform reaches 10 at its lower end, where the case refuses it, and no "
+                         "other input varies $.vehicles[0].inertia: $.vehicles[0].inertia: not symmetric: [0][1] = 10 but [1][0] = 0\n");
+  // With its transpose varied too, the samples may meet the rule: the run is the samples' to judge.
+  const auto [u2, both] = run_with("inertia_pair.json", R"({"samples": 20, "inputs": [
+      {"path": "$.vehicles[0].inertia[0][1]", "distribution": "uniform", "min": 10, "max": 20},
+      {"path": "$.vehicles[0].inertia[1][0]", "distribution": "uniform", "min": 10, "max": 20}]})");
+  CHECK(both.status == 1);
+  CHECK_THAT(both.err, Catch::StartsWith("impact3d: error: " + u2 + ": $: pc-crash mu=1.0 solved none of the 20 samples: 20 of them are refused (invalid $.vehicles[0].inertia)"));
+  // The second vehicle driving away: no sample approaches, and the run fails naming that.
+  const auto [u3, away] = run_with("away.json", R"({"samples": 50, "inputs": [{"path": "$.vehicles[1].velocity[1]", "distribution": "uniform", "min": -30, "max": -20}]})");
+  CHECK(away.status == 1);
+  CHECK(away.out.empty());
+  CHECK(std::count(away.err.begin(), away.err.end(), '\n') == 1);
+  CHECK_THAT(away.err, Catch::StartsWith("impact3d: error: " + u3 + ": $: pc-crash mu=1.0 solved none of the 50 samples: 50 of them do not approach, the first (sample 0): $.vehicles: not approaching"));
+  // Fewer than half approach: the run succeeds, and says per strategy that its summary is of those.
+  const auto [u4, few] = run_with("few.json", R"({"samples": 200, "inputs": [{"path": "$.vehicles[1].velocity[1]", "distribution": "uniform", "min": -10, "max": 4}]})");
+  CHECK(few.status == 0);
+  const auto solved = nlohmann::json::parse(run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", u4, "--format", "json"}).out)["results"][0]["solved"].get<int>();
+  CHECK(solved < 100);
+  CHECK(std::count(few.err.begin(), few.err.end(), '\n') == 4);  // the case's four strategies
+  CHECK_THAT(few.err, Catch::StartsWith(fmt::format("impact3d: warning: montecarlo: pc-crash mu=1.0 solved {} of 200 samples (the commonest rejection: not approaching, {})", solved, 200 - solved)));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a run is sized before it starts: one past the memory limit is refused, saying how to fit") {
+  // 1.1e6 samples of four strategies: within the samples' limit, but 2160 bytes a sample (67 outputs
+  // of 8 bytes a strategy, 16 for the summaries' columns) is 2266 MiB, past the 2048 a run may take.
+  const fs::path dir = scratch();
+  const fs::path u = dir / "u.json";
+  std::ofstream(u) << R"({"inputs": [{"path": "$.vehicles[1].velocity[1]", "distribution": "uniform", "min": 10, "max": 12}]})";
+  const Run r = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", u.string(), "--samples", "1100000", "--strategy",
+                                           "pc-crash:mu=0.4", "--strategy", "wach:mu=0.4", "--strategy", "brach:mu_t=critical,mu_z=0", "--strategy", "pc-crash:mu=1"},
+                            "", "", 20, 512);
+  CHECK(r.status == 1);
+  CHECK(r.out.empty());
+  CHECK(r.err == "impact3d: error: --samples: 1100000 samples of 4 results would take 2266 MiB (2160 bytes a sample), more than "
+                 "the 2048 MiB a run may take: every output of every sample is kept for the percentiles; take at most 994205 "
+                 "samples, or fewer strategies\n");
   fs::remove_all(dir);
 }
 

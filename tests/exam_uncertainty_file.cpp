@@ -101,7 +101,13 @@ TEST_CASE("bad uncertainty files are refused in one line naming the field") {
   CHECK(refusal(R"({"inputs": [)" + two + R"(], "correlations": [{"paths": ["$.a", "$.a"], "rho": 0.1}]})") ==
         "$.correlations[0].paths: must name two different inputs");
   CHECK(refusal(R"({"inputs": [)" + two + R"(], "correlations": [{"paths": ["$.a", "$.b"], "rho": 0.1}, {"paths": ["$.b", "$.a"], "rho": 0.2}]})") ==
-        "$.correlations: more than the 1 pairs of the inputs");
+        "$.correlations[1].paths: this pair is correlated twice");
+  // One input has no pair, and a correlation naming another path is refused by that path.
+  CHECK(refusal(R"({"inputs": [{"path": "$.a", )" + normal + R"(}], "correlations": [{"paths": ["$.a", "$.b"], "rho": 0.5}]})") ==
+        "$.correlations[0].paths[1]: \"$.b\" is not one of the inputs");
+  // A truncated normal whose window no double resolves: one line, its path.
+  CHECK_THAT(refusal(one(R"({"path": "$.a", "distribution": "truncated-normal", "mean": 0, "sd": 1, "min": 1e6, "max": 1e7})")),
+             Catch::StartsWith("$.inputs[0]: its window is too narrow, or too far from the mean, to be sampled to double precision"));
   const std::string three = two + R"(, {"path": "$.c", )" + normal + "}";
   CHECK(refusal(R"({"inputs": [)" + three +
                 R"(], "correlations": [{"paths": ["$.a", "$.b"], "rho": 0.9}, {"paths": ["$.b", "$.c"], "rho": 0.9}, {"paths": ["$.a", "$.c"], "rho": -0.9}]})") ==

@@ -42,6 +42,7 @@
 #include "impact3d/io/strategy_option.hpp"
 #include "batch_csv.hpp"
 #include "helper_thread.hpp"
+#include "output_file.hpp"
 #include "row_output.hpp"
 #include "user_error.hpp"
 
@@ -242,13 +243,6 @@ int open_input(const std::string& path) {
   return fd;
 }
 
-int open_output(const std::string& path) {
-  if (path == "-") return STDOUT_FILENO;
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOCTTY, 0644);
-  if (fd < 0) throw UserError(fmt::format("{}: cannot write the file ({})", path, std::strerror(errno)));
-  return fd;
-}
-
 // The first `n` rows' texts in order (their head and document pieces, not copied here).
 bool write_rows(RowOutput& output, const std::vector<Solved>& rows, std::size_t n) {
   std::vector<iovec> iov;
@@ -300,7 +294,11 @@ int batch(const BatchOptions& o) {
   const int in = open_input(o.input);
   struct stat st {};
   const std::uint64_t total = ::fstat(in, &st) == 0 && S_ISREG(st.st_mode) ? static_cast<std::uint64_t>(st.st_size) : 0;
-  const int out = open_output(o.output);
+  // A file is written beside its name and renamed over it when the run ends well or is interrupted (the
+  // rows written are whole); a run whose output failed leaves the old file (output_file.hpp).
+  std::optional<OutputFile> file;
+  if (!o.output.empty() && o.output != "-") file.emplace(o.output);
+  const int out = file ? file->fd() : STDOUT_FILENO;
   struct sigaction sa {};
   sa.sa_handler = on_stop;
   sa.sa_flags = SA_RESETHAND;  // a second signal ends the program at once
@@ -327,7 +325,7 @@ int batch(const BatchOptions& o) {
       formats.columns = &*columns;
     }
   }
-  RowOutput output(out, out != STDOUT_FILENO);
+  RowOutput output(out, file && file->replaces());
   if (formats.csv_out) {
     const std::string header = io::result_csv_header();
     const iovec piece{const_cast<char*>(header.data()), header.size()};
@@ -422,14 +420,20 @@ int batch(const BatchOptions& o) {
   progress.finish();
   if (in != STDIN_FILENO) ::close(in);
   int lost_errno = output.error();
-  if (out != STDOUT_FILENO && ::close(out) != 0 && !output_lost) {
-    output_lost = true;
-    lost_errno = errno;
-  }
   std::string why;
+  if (file && !output_lost) {
+    try {
+      file->commit();
+    } catch (const UserError& e) {
+      output_lost = true;
+      lost_errno = 0;
+      why = fmt::format(" (the output could not be written: {})", e.what());
+    }
+  }
   if (stop_signal) why = " (interrupted: the rows written are whole)";
   else if (output_lost && lost_errno == EPIPE) why = " (the output was closed)";
-  else if (output_lost) why = fmt::format(" (the output could not be written: {})", std::strerror(lost_errno));
+  else if (output_lost && lost_errno) why = fmt::format(" (the output could not be written: {}{})", std::strerror(lost_errno),
+                                                         file && file->replaces() ? "; nothing was replaced" : "");
   std::fprintf(stderr, "impact3d: batch: %ld rows read, %ld solved, %ld rejected%s\n", read, solved, rejected, why.c_str());
   if (stop_signal) return 128 + stop_signal;
   if (output_lost || internal) return 3;

@@ -1,6 +1,7 @@
 #include "gnuplot.hpp"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -122,30 +123,25 @@ OutputDir::OutputDir(const std::string& path) : path_(path) {
 
 OutputDir::~OutputDir() { ::close(fd_); }
 
-int OutputDir::create(const std::string& name) const {
-  // Whatever stands under that name, a planted link included, is removed, never followed: the new file
-  // is created exclusively.
-  if (::unlinkat(fd_, name.c_str(), 0) != 0 && errno != ENOENT)
-    throw UserError(fmt::format("{}/{}: cannot replace ({})", path_, name, std::strerror(errno)));
-  const int fd = above_std(::openat(fd_, name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644));
-  if (fd < 0) throw UserError(fmt::format("{}/{}: cannot create ({})", path_, name, std::strerror(errno)));
-  return fd;
+std::unique_ptr<Replacement> OutputDir::replace(const std::string& name) const {
+  const std::string shown = path_ + "/" + name;
+  struct stat st {};
+  int mode = -1;
+  if (::fstatat(fd_, name.c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0) {
+    if (S_ISREG(st.st_mode)) mode = static_cast<int>(st.st_mode);
+    else if (!S_ISLNK(st.st_mode))  // a planted link is replaced, never followed
+      throw UserError(fmt::format("{}: cannot replace (not a regular file)", shown));
+  } else if (errno != ENOENT) {
+    throw UserError(fmt::format("{}: cannot replace ({})", shown, std::strerror(errno)));
+  }
+  return std::make_unique<Replacement>(fd_, name, shown, mode);
 }
 
 void OutputDir::write(const std::string& name, std::string_view text) const {
-  const int fd = create(name);
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int err = errno;
-      ::close(fd);
-      throw UserError(fmt::format("{}/{}: cannot write ({})", path_, name, std::strerror(err)));
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  ::close(fd);
+  const auto file = replace(name);
+  if (const int err = write_all(file->fd(), text); err != 0)
+    throw UserError(fmt::format("{}/{}: cannot write ({}); nothing was replaced", path_, name, std::strerror(err)));
+  file->commit();
 }
 
 std::string gnuplot_string(std::string_view text) {
@@ -179,35 +175,61 @@ void require_gnuplot() {
 }
 
 std::string run_gnuplot(const OutputDir& dir, const std::string& script, const std::string& image) {
-  const int image_fd = dir.create(image);
-  int err[2];
+  // gnuplot's image comes through a pipe and is written here, so that a write that fails (a full disk)
+  // is seen: gnuplot may end well having written half an image.
+  const auto file = dir.replace(image);
+  int out[2], err[2];
+  if (::pipe2(out, O_CLOEXEC) != 0) throw UserError(fmt::format("cannot run gnuplot ({})", std::strerror(errno)));
   if (::pipe2(err, O_CLOEXEC) != 0) {
-    ::close(image_fd);
-    throw UserError(fmt::format("cannot run gnuplot ({})", std::strerror(errno)));
+    const int e = errno;
+    ::close(out[0]), ::close(out[1]);
+    throw UserError(fmt::format("cannot run gnuplot ({})", std::strerror(e)));
   }
-  err[0] = above_std(err[0]);
-  err[1] = above_std(err[1]);
-  const pid_t pid = spawn({"gnuplot", script}, image_fd, err[1], dir.fd());
+  for (int* fd : {&out[0], &out[1], &err[0], &err[1]}) *fd = above_std(*fd);
+  const pid_t pid = spawn({"gnuplot", script}, out[1], err[1], dir.fd());
   const int spawn_errno = errno;
-  ::close(image_fd);
+  ::close(out[1]);
   ::close(err[1]);
   if (pid < 0) {
-    ::close(err[0]);
+    ::close(out[0]), ::close(err[0]);
     if (spawn_errno == ENOENT) not_found();
     throw UserError(fmt::format("cannot run gnuplot ({})", std::strerror(spawn_errno)));
   }
   std::string messages;
-  char buf[4096];
-  for (;;) {
-    const ssize_t n = ::read(err[0], buf, sizeof buf);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    if (messages.size() < kMessageBytes) messages.append(buf, static_cast<std::size_t>(n));
+  int write_error = 0;
+  char buf[1 << 16];
+  pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
+  for (int open = 2; open > 0;) {
+    if (::poll(fds, 2, -1) < 0) {
+      if (errno == EINTR) continue;
+      break;
+    }
+    for (pollfd& p : fds) {
+      if (p.fd < 0 || !(p.revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      const ssize_t n = ::read(p.fd, buf, sizeof buf);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        ::close(p.fd);
+        p.fd = -1;
+        --open;
+        continue;
+      }
+      const std::string_view got(buf, static_cast<std::size_t>(n));
+      if (p.fd == out[0]) {
+        if (!write_error) write_error = write_all(file->fd(), got);  // the rest is read and dropped
+      } else if (messages.size() < kMessageBytes) {
+        messages.append(got);
+      }
+    }
   }
-  ::close(err[0]);
+  for (const pollfd& p : fds)
+    if (p.fd >= 0) ::close(p.fd);
   const int status = wait_for(pid);
   if (status != 0)
     throw UserError(fmt::format("gnuplot failed on {} (exit status {}): {}", script, status, summary_line(messages)));
+  if (write_error)
+    throw UserError(fmt::format("{}/{}: cannot write ({}); nothing was replaced", dir.path(), image, std::strerror(write_error)));
+  file->commit();
   return summary_line(messages);
 }
 

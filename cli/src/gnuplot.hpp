@@ -3,12 +3,16 @@
 // a command and no planted link is followed.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 
+#include "output_file.hpp"
+
 namespace impact3d::cli {
 
-// An open output directory; every file is created in it by name (a plain file name, no '/').
+// An open output directory; every file is created in it by name (a plain file name, no '/'), through a
+// temporary file renamed over the name when complete (output_file.hpp).
 class OutputDir {
  public:
   explicit OutputDir(const std::string& path);  // creates it when missing; throws UserError
@@ -16,10 +20,11 @@ class OutputDir {
   OutputDir(const OutputDir&) = delete;
   OutputDir& operator=(const OutputDir&) = delete;
 
-  // Replaces any file or link of that name with a new file holding `text`.
+  // Replaces a file or a link of that name (never followed) with a new file holding `text`; refuses to
+  // replace anything else (a directory, a device, a FIFO).
   void write(const std::string& name, std::string_view text) const;
-  // The same, for a file another program writes through the returned descriptor (closed by the caller).
-  int create(const std::string& name) const;
+  // The same, for a file another program writes through the replacement's descriptor.
+  std::unique_ptr<Replacement> replace(const std::string& name) const;
   int fd() const { return fd_; }
   const std::string& path() const { return path_; }
 

@@ -1,6 +1,9 @@
 // impact3d: solve a two-vehicle 3D collision case by the strategies of Marine's paper.
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <new>
 
 #include <fmt/format.h>
 
@@ -49,6 +52,8 @@ int guarded(const std::string& file, F&& body) {
     return error_line(in_file(std::string("no solution: ") + e.what()), kBadInput);
   } catch (const cli::UserError& e) {
     return error_line(e.what(), kBadInput);
+  } catch (const std::bad_alloc&) {
+    return error_line(in_file("out of memory: the machine gave less than the run needed (README, \"Input limits\")"), kInternal);
   } catch (const std::exception& e) {
     return error_line(in_file(e.what()), kInternal);
   }
@@ -62,6 +67,24 @@ auto naming_strategies(const impact3d::io::CaseSpec& spec, F&& body) {
   } catch (const impact3d::SolveError& e) {
     throw impact3d::io::no_solution(spec, e);
   }
+}
+
+// CLI11 converts "-1" to an unsigned 2^64 - 1 and lets a NaN through a range: the options' texts are
+// checked as the files' numbers are, before any conversion.
+std::string seed_problem(const std::string& text) {
+  std::uint64_t v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size())
+    return "must be a whole number from 0 to 18446744073709551615";
+  return {};
+}
+
+std::string tolerance_problem(const std::string& text) {
+  double v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v) || v < 0 || v > 1e300)
+    return "must be a finite number from 0 to 1e300";
+  return {};
 }
 
 // The strategies of the case or the command line.
@@ -143,7 +166,7 @@ int main(int argc, char** argv) {
   mc_cmd->add_option("--format", mopt.format, "text summary (default) or contract JSON")->check(CLI::IsMember({"text", "json"}));
   mc_cmd->add_option("--samples", mopt.samples, "replace the file's number of samples")
       ->check(CLI::Range(std::uint64_t{1}, impact3d::io::kMaxSamples));
-  mc_cmd->add_option("--seed", mopt.seed, "replace the file's seed");
+  mc_cmd->add_option("--seed", mopt.seed, "replace the file's seed (0 to 2^64 - 1)")->check(seed_problem);
   mc_cmd->add_option("--jobs", mopt.jobs, "threads (default: every core); the output does not depend on it")
       ->check(CLI::Range(1, 1024));
   mc_cmd->add_option("--samples-out", mopt.samples_out, "also write every sample's inputs and outputs to this CSV file");
@@ -190,9 +213,9 @@ int main(int argc, char** argv) {
   compare_cmd->add_option("other", other, "the other tool's results: JSON file, directory of JSON files, or CSV")->required();
   // A tolerance that admits everything (inf) or nothing (< 0) is a usage error, not a verdict.
   auto* rtol_opt =
-      compare_cmd->add_option("--rtol", copt.rtol, "relative tolerance (default 1e-9)")->check(CLI::Range(0.0, 1e300));
+      compare_cmd->add_option("--rtol", copt.rtol, "relative tolerance (default 1e-9)")->check(tolerance_problem);
   auto* atol_opt = compare_cmd->add_option("--atol", copt.atol, "absolute tolerance in the case's units (default 1e-9)")
-                       ->check(CLI::Range(0.0, 1e300));
+                       ->check(tolerance_problem);
   compare_cmd
       ->add_flag("--rtol-from-bound", copt.rtol_from_bound,
                  "each case's tolerance from the other results' own rounding_bound (impact3d's result JSON): rtol = the "
@@ -208,7 +231,7 @@ int main(int argc, char** argv) {
                          "N, or both");
   verify_cmd->add_option("--random", vopt.random, "add this many seeded random collisions (at most 100000)")
       ->check(CLI::Range(0, 100000));
-  verify_cmd->add_option("--seed", vopt.seed, "seed of the random collisions (default 1)");
+  verify_cmd->add_option("--seed", vopt.seed, "seed of the random collisions (default 1)")->check(seed_problem);
   verify_cmd->add_flag("--certify", vopt.certify,
                        "also enclose each case's exact result in ball arithmetic and prove that every precision's "
                        "results of both engines lie within their stated rounding bounds of it");

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <cerrno>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -13,7 +14,10 @@
 #include "impact3d/io/montecarlo.hpp"
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/io/read_uncertainty.hpp"
+#include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/io/strategy_option.hpp"
+#include "impact3d/io/escape.hpp"
+#include "output_file.hpp"
 #include "user_error.hpp"
 
 namespace impact3d::cli {
@@ -48,18 +52,15 @@ int montecarlo(const MonteCarloCliOptions& o) {
     mo.keep_samples = true;
   }
   // The samples' file is opened before the run, so that a run is not lost to a path that cannot be written.
-  std::FILE* samples_file = nullptr;
+  std::optional<OutputFile> samples_file;
   if (!o.samples_out.empty()) {
     mo.keep_samples = true;
-    samples_file = std::fopen(o.samples_out.c_str(), "wb");
-    if (!samples_file) throw UserError(fmt::format("--samples-out: cannot write {} ({})", o.samples_out, std::strerror(errno)));
-  }
-  struct Closer {
-    std::FILE* f;
-    ~Closer() {
-      if (f) std::fclose(f);
+    try {
+      samples_file.emplace(o.samples_out);
+    } catch (const UserError& e) {
+      throw UserError(std::string("--samples-out: ") + e.what());
     }
-  } closer{samples_file};
+  }
   const bool shown = ::isatty(STDERR_FILENO) == 1;
   const auto start = std::chrono::steady_clock::now();
   if (shown)
@@ -79,11 +80,30 @@ int montecarlo(const MonteCarloCliOptions& o) {
     throw in_file(o.uncertainty_path, e);
   }
   if (shown) std::fputs("\r\033[K", stderr);
+  // A summary of fewer than half the samples describes another population than the one asked for.
+  for (const io::StrategySummary& r : run.results)
+    if (2 * r.solved < run.samples) {
+      std::uint64_t most = 0;
+      std::string why;
+      for (const io::Rejections& x : r.rejected)
+        if (x.count > most) most = x.count, why = x.reason;
+      std::fprintf(stderr, "impact3d: warning: montecarlo: %s solved %llu of %llu samples (the commonest rejection: %s, %llu): its summary describes only those\n",
+                   io::printable(io::strategy_label(r.strategy)).c_str(), static_cast<unsigned long long>(r.solved),
+                   static_cast<unsigned long long>(run.samples), io::printable(why).c_str(), static_cast<unsigned long long>(most));
+    }
   if (samples_file) {
-    bool ok = true;
-    io::samples_csv(run, [&](std::string_view piece) { ok = ok && std::fwrite(piece.data(), 1, piece.size(), samples_file) == piece.size(); });
-    closer.f = nullptr;
-    if (std::fclose(samples_file) != 0 || !ok) throw UserError(fmt::format("--samples-out: cannot write {}", o.samples_out));
+    int error = 0;
+    io::samples_csv(run, [&](std::string_view piece) {
+      if (!error) error = write_all(samples_file->fd(), piece);
+    });
+    if (error)
+      throw UserError(fmt::format("--samples-out: {}: cannot write the file ({}){}", o.samples_out, std::strerror(error),
+                                  samples_file->replaces() ? "; nothing was replaced" : ""));
+    try {
+      samples_file->commit();
+    } catch (const UserError& e) {
+      throw UserError(std::string("--samples-out: ") + e.what());
+    }
   }
   if (!o.plot.out_dir.empty()) montecarlo_plot(run, o.plot);
   const std::string out = o.format == "json" ? io::montecarlo_json(run) : io::montecarlo_text(run);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "gnuplot.hpp"
+#include "output_file.hpp"
 #include "impact3d/io/read_case.hpp"
 #include "impact3d/io/render.hpp"
 #include "impact3d/io/strategy_kinds.hpp"
@@ -64,6 +65,8 @@ std::vector<io::ReportFigure> figures_of(const io::CaseSpec& spec, const fs::pat
 
 std::string report(const ReportOptions& o) {
   const io::CaseSpec spec = io::read_case(io::read_text_file(o.case_path));
+  // Opened before the work, so that none is lost to a path that cannot be written.
+  OutputFile out(o.out_file);
   std::vector<io::ReportFigure> figures;
   std::string note;
   if (!o.figures) {
@@ -94,10 +97,8 @@ std::string report(const ReportOptions& o) {
   r.figures = &figures;
   r.figures_note = note;
   const std::string page = io::render(spec, o.precision, r);
-  const fs::path out(o.out_file);
-  if (out.filename().empty()) throw UserError(fmt::format("{}: not a file name", o.out_file));
-  const OutputDir dir(out.has_parent_path() ? out.parent_path().string() : ".");
-  dir.write(out.filename().string(), page);
+  out.write(page);
+  out.commit();
   return o.out_file + "\n";
 }
 

@@ -18,6 +18,7 @@ ft lbf) unless `units` asks for others; angles are in degrees. Bad input raises 
 ValueError) whose message is the command line's one-line message: the file, the JSON path, the problem.
 """
 import os
+from numbers import Integral
 
 from . import _convert
 from . import _impact3d
@@ -26,6 +27,21 @@ from ._impact3d import (BATCH_COLUMNS, BATCH_SIMD, PRECISIONS, REGIMES, STATUSES
 
 __all__ = ["read_case", "solve", "solve_batch", "montecarlo", "sensitivity", "reconstruct", "Case", "CaseError",
            "PRECISIONS", "REGIMES", "STATUSES", "WARNINGS", "BATCH_COLUMNS", "BATCH_SIMD"]
+
+
+_MAX_JOBS = _impact3d.MAX_JOBS
+_MAX_SEED = 2**64 - 1
+
+
+def _whole(value, name, low, high, words):
+    """`value` as an int from `low` to `high`, checked here rather than by the binding, whose refusal of
+    a negative or huge int is a many-line TypeError: a bool or a float is a TypeError, a value out of
+    range a ValueError, each one line in the command line's words."""
+    if isinstance(value, bool) or not isinstance(value, Integral):
+        raise TypeError(f"{name}: an int, not {type(value).__name__}")
+    if not low <= value <= high:
+        raise ValueError(f"{name}: {words}, not {int(value)}")
+    return int(value)
 
 
 def _json_text(value, what):
@@ -108,6 +124,7 @@ def solve_batch(jobs=0, velocities=False, strategy="pc-crash", limit=None, **col
     finite or beyond the case format's magnitudes (1e12, and non-zero below 1e-100), a mass is not
     positive, an inertia tensor is not symmetric positive definite, restitution is outside [0, 1] or mu
     is negative. An unknown strategy or limit raises ValueError, one that is not a str TypeError."""
+    jobs = _whole(jobs, "solve_batch: jobs", 0, _MAX_JOBS, f"from 0 (every core) to {_MAX_JOBS}")
     if not isinstance(strategy, str):
         raise TypeError(f"solve_batch: strategy: a str, not {type(strategy).__name__}")
     if limit is not None and not isinstance(limit, str):
@@ -136,6 +153,11 @@ def montecarlo(case, uncertainty, strategies=None, precision="double", engine="g
     (NaN where rejected or undefined)}], "reasons": [...]}.
 
     Raises CaseError with the command line's messages."""
+    jobs = _whole(jobs, "jobs", 0, _MAX_JOBS, f"from 0 (every core) to {_MAX_JOBS}")
+    if samples is not None:
+        samples = _whole(samples, "samples", 1, _impact3d.MAX_SAMPLES, f"from 1 to {_impact3d.MAX_SAMPLES}")
+    if seed is not None:
+        seed = _whole(seed, "seed", 0, _MAX_SEED, f"must be a whole number from 0 to {_MAX_SEED}")
     c = read_case(case)
     text, sampled = _impact3d.montecarlo(c, _uncertainty(uncertainty), _strategies(strategies), precision, engine,
                                          jobs, samples, seed, keep_samples)

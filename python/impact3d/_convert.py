@@ -48,18 +48,26 @@ class InputError(ValueError):
     """A value with no JSON form, at its JSON path."""
 
 
-def case_json(value, path="$"):
+# The case reader's nesting limit (io/limits.hpp, README "Input limits"), checked before Python's own
+# recursion limit is reached: a dict nested 100 000 deep, or one holding itself, is bad input.
+MAX_DEPTH = 32
+
+
+def case_json(value, path="$", depth=0):
     """`value` (dicts, lists, tuples, strings, booleans, None, ints, floats, Decimals, NumPy scalars) as
-    JSON text; a Decimal keeps every digit. Raises InputError naming the path of what has no JSON form."""
+    JSON text; a Decimal keeps every digit. Raises InputError naming the path of what has no JSON form,
+    or of a container nested deeper than MAX_DEPTH levels."""
+    if isinstance(value, (dict, list, tuple)) and depth >= MAX_DEPTH:
+        raise InputError(f"{path}: nested deeper than {MAX_DEPTH} levels")
     if isinstance(value, dict):
         items = []
         for k, v in value.items():
             if not isinstance(k, str):
                 raise InputError(f"{path}: a key that is not a string: {k!r}")
-            items.append(json.dumps(k) + ": " + case_json(v, f"{path}.{k}"))
+            items.append(json.dumps(k) + ": " + case_json(v, f"{path}.{k}", depth + 1))
         return "{" + ", ".join(items) + "}"
     if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(case_json(v, f"{path}[{i}]") for i, v in enumerate(value)) + "]"
+        return "[" + ", ".join(case_json(v, f"{path}[{i}]", depth + 1) for i, v in enumerate(value)) + "]"
     if value is None or isinstance(value, (bool, str)):
         return json.dumps(value)
     if type(value).__name__ == "bool_":  # NumPy's

@@ -34,3 +34,5 @@ WARNINGS: tuple[str, ...]
 STATUSES: tuple[str, ...]
 BATCH_COLUMNS: tuple[str, ...]
 BATCH_SIMD: str
+MAX_SAMPLES: int
+MAX_JOBS: int

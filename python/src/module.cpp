@@ -63,6 +63,8 @@ PYBIND11_MODULE(_impact3d, m) {
   for (const auto w : io::kWarningNames) warnings.append(std::string(w));
   m.attr("REGIMES") = py::tuple(regimes);
   m.attr("WARNINGS") = py::tuple(warnings);
+  m.attr("MAX_SAMPLES") = io::kMaxSamples;  // the bounds the package checks its arguments by
+  m.attr("MAX_JOBS") = kMaxJobs;
   m.attr("STATUSES") = py::make_tuple(status_name(Status::solved), status_name(Status::not_approaching),
                                       status_name(Status::singular), "invalid");
 }

@@ -165,6 +165,16 @@ def test_strategy_and_its_columns_are_checked():
     assert impact3d.solve_batch(mu=-mu, **d)["problems"][0] == "mu: negative"
 
 
+def test_jobs_is_checked_in_one_line_before_the_binding():
+    d = peer.random_collisions(4, 3)
+    for jobs, error, text in ((-1, ValueError, "solve_batch: jobs: from 0 (every core) to 1024, not -1"),
+                              (1025, ValueError, "solve_batch: jobs: from 0 (every core) to 1024, not 1025"),
+                              (1.5, TypeError, "solve_batch: jobs: an int, not float")):
+        with pytest.raises(error) as raised:
+            impact3d.solve_batch(jobs=jobs, **d)
+        assert str(raised.value) == text
+
+
 def test_bad_rows_are_flagged_not_dropped():
     d = peer.random_collisions(40, 9)
     d["mass_1"][3] = -1500
@@ -234,5 +244,3 @@ def test_columns_that_are_not_real_numbers_are_refused():
             impact3d.solve_batch(**{**d, "mu": bad})
     ints = impact3d.solve_batch(**{**d, "mass_1": d["mass_1"].round().astype(np.int64)})
     assert (np.array(ints["status"]) == 0).all()
-    with pytest.raises(ValueError, match="jobs at most 1024"):
-        impact3d.solve_batch(jobs=1025, **d)

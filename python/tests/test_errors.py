@@ -70,3 +70,23 @@ def test_decimals_and_numpy_numbers_in_a_dict_keep_their_value(fig8):
     case["vehicles"][0]["mass"] = np.int64(1560)
     case["vehicles"][1]["mass"] = np.float64(2600.0)
     assert impact3d.solve(case, precision="100") == impact3d.solve(fig8, precision="100")
+
+
+def test_a_dict_nested_past_the_readers_limit_is_a_case_error_naming_it():
+    deep = {}
+    inner = deep
+    for _ in range(100000):
+        inner["a"] = {}
+        inner = inner["a"]
+    with pytest.raises(impact3d.CaseError, match=r"nested deeper than 32 levels$"):
+        impact3d.read_case(deep)
+    itself = {"name": "x"}
+    itself["vehicles"] = [itself]
+    with pytest.raises(impact3d.CaseError, match=r"^\$(\.vehicles\[0\])+: nested deeper than 32 levels$"):
+        impact3d.read_case(itself)
+    # 32 levels are the reader's to judge: its own message, not the package's.
+    shallow = {"name": "x", "units": "SI", "vehicles": [], "x": [[[[[]]]]]}
+    with pytest.raises(impact3d.CaseError) as raised:
+        impact3d.read_case(shallow)
+    assert "nested deeper" not in str(raised.value)
+

@@ -54,3 +54,29 @@ def test_montecarlo_errors_are_the_clis(fig8):
     for bad in ({"samples": 0}, {"samples": 10**7 + 1}, {"samples": 2**62}, {"jobs": 1025}):
         with pytest.raises(ValueError, match="^(samples|jobs): "):
             impact3d.montecarlo(fig8, UNCERTAINTY, **bad)
+
+
+def test_counts_and_seeds_are_checked_in_one_line_before_the_binding(fig8):
+    # pybind11 refuses a negative or huge int with a many-line TypeError: the package checks first, in
+    # the command line's words.
+    for bad, error, start in (({"samples": -1}, ValueError, "samples: from 1 to 10000000, not -1"),
+                              ({"samples": 10**30}, ValueError, "samples: from 1 to 10000000, not 10"),
+                              ({"samples": 1.5}, TypeError, "samples: an int, not float"),
+                              ({"seed": -1}, ValueError, "seed: must be a whole number from 0 to 18446744073709551615, not -1"),
+                              ({"seed": 2**64}, ValueError, "seed: must be a whole number from 0 to 18446744073709551615, not 1844"),
+                              ({"seed": True}, TypeError, "seed: an int, not bool"),
+                              ({"jobs": -1}, ValueError, "jobs: from 0 (every core) to 1024, not -1"),
+                              ({"jobs": 1.5}, TypeError, "jobs: an int, not float")):
+        with pytest.raises(error) as raised:
+            impact3d.montecarlo(fig8, UNCERTAINTY, **bad)
+        assert str(raised.value).startswith(start), bad
+        assert "\n" not in str(raised.value), bad
+    # The largest seed is a seed.
+    assert impact3d.montecarlo(fig8, UNCERTAINTY, samples=10, seed=2**64 - 1)["seed"] == 2**64 - 1
+
+
+def test_a_run_that_solved_no_sample_raises(fig8):
+    away = {"samples": 20, "inputs": [{"path": "$.vehicles[1].velocity[1]", "distribution": "uniform", "min": -30, "max": -20}]}
+    with pytest.raises(impact3d.CaseError, match=r"^\$: pc-crash mu=1\.0 solved none of the 20 samples: 20 of them do not approach"):
+        impact3d.montecarlo(fig8, away)
+

@@ -24,6 +24,7 @@
 #include "impact3d/io/format_double.hpp"
 #include "impact3d/io/json_pick.hpp"
 #include "impact3d/io/render.hpp"
+#include "impact3d/io/strategy_kinds.hpp"
 #include "impact3d/io/to_scene.hpp"
 #include "impact3d/io/case_numbers.hpp"
 #include "impact3d/io/montecarlo_linear.hpp"
@@ -86,6 +87,12 @@ JsonPick make_pick() {
   return JsonPick(paths, true);
 }
 
+// Whether `path` is `container` or lies under it.
+bool under(const std::string& path, const std::string& container) {
+  return path.rfind(container, 0) == 0 &&
+         (path.size() == container.size() || path[container.size()] == '.' || path[container.size()] == '[');
+}
+
 // A distribution's values reach a field the case bounds only inside its support: each end is tried on
 // the case reader (the case's own rules, not a copy of them), an unbounded end as a value far out.
 // Returns, per input, whether both ends passed the reader with no error at all: then the reader takes
@@ -122,8 +129,19 @@ std::vector<char> check_supports(CaseVariants& variants, const UncertaintySpec& 
         variants.with(values.data());
       } catch (const CaseError& e) {
         clean[i] = 0;
-        if (e.path != path_text(u.inputs[i].path)) continue;  // a rule of the whole case: the sample's to meet
         const std::string kind(uncertainty::kind_name(d.kind));
+        if (e.path != path_text(u.inputs[i].path)) {
+          // A rule of several numbers (a symmetric tensor): the samples' to meet, unless no other input
+          // varies a number under it, when every sample but the case's own values would break it.
+          if (std::any_of(u.inputs.begin(), u.inputs.end(), [&](const UncertainInput& other) {
+                return &other != &u.inputs[i] && under(path_text(other.path), e.path);
+              }))
+            continue;
+          throw CaseError(fmt::format("$.inputs[{}].distribution", i),
+                          fmt::format("the {} reaches {} at its {} end, where the case refuses it, and no other input "
+                                      "varies {}: {}",
+                                      kind, fmt::format("{}", end.value), end.side, e.path, e.line()));
+        }
         if (end.bounded)
           throw CaseError(fmt::format("$.inputs[{}].distribution", i),
                           fmt::format("the {} reaches {} at its {} end, but the case refuses it: {}", kind,
@@ -361,6 +379,14 @@ void merge(std::vector<Tally>& into, const std::vector<Tally>& from) {
 
 }  // namespace
 
+std::uint64_t run_bytes_per_sample(std::size_t results, std::size_t inputs, bool keep_samples) {
+  // The store of every output, the samples' inputs, regimes and reasons when kept, and the two columns
+  // of doubles a summary sorts and selects in.
+  const std::uint64_t store = 8 * results * monte_carlo_outputs().size();
+  const std::uint64_t kept = keep_samples ? 8 * inputs + 3 * results : 0;
+  return store + kept + 16;
+}
+
 MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u, const MonteCarloOptions& o) {
   if (o.precision == "exact") throw CaseError("--precision", "Monte Carlo runs at a floating-point precision, not exact");
   std::vector<JsonPath> paths;
@@ -403,12 +429,16 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   const std::vector<StrategySpec>& strategies = o.strategies.empty() ? variants.base().strategies : o.strategies;
   const std::size_t results = strategies.size(), outputs = monte_carlo_outputs().size();
   const std::uint64_t n = u.samples;
-  const std::uint64_t per_sample = results * outputs + (o.keep_samples ? u.inputs.size() : 0);
+  const std::uint64_t per_sample = run_bytes_per_sample(results, u.inputs.size(), o.keep_samples);
   // Compared by division: n * per_sample may wrap for a caller that does not bound n (the readers do).
-  if (per_sample > 0 && n > kMaxKeptValues / per_sample)
-    throw CaseError("$.samples", fmt::format("{} samples of {} results keep more than the {} values a run keeps: take "
-                                             "fewer samples or strategies",
-                                             n, results, kMaxKeptValues));
+  if (n > kMaxRunBytes / per_sample)
+    throw CaseError("$.samples",
+                    fmt::format("{} samples of {} {} would take {:.0f} MiB ({} bytes a sample), more than the {} MiB a run may "
+                                "take: every output of every sample is kept for the percentiles; take at most {} samples, "
+                                "or fewer strategies",
+                                n, results, results == 1 ? "result" : "results",
+                                std::ceil(static_cast<double>(n) * static_cast<double>(per_sample) / (1 << 20)),
+                                per_sample, kMaxRunBytes >> 20, kMaxRunBytes / per_sample));
   std::vector<double> store(results * outputs * n, kNaN);
   if (o.keep_samples) {
     run.inputs_of.assign(n * u.inputs.size(), 0.0);
@@ -465,6 +495,19 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   std::vector<Tally> tally(results);
   for (auto& t : tally) t.written.assign(outputs, false);
   for (auto& w : workers) merge(tally, w->tally());
+  for (std::size_t k = 0; k < results; ++k) {
+    if (tally[k].solved > 0 || n == 0) continue;
+    const Rejections* most = nullptr;
+    for (const auto& [reason, r] : tally[k].rejected)
+      if (!most || r.count > most->count) most = &r;
+    if (!most) continue;
+    throw CaseError("$", fmt::format("{} solved none of the {} samples: {} of them {}, the first (sample {}): {}",
+                                     strategy_label(strategies[k]), n, most->count,
+                                     most->reason == "not approaching" ? "do not approach"
+                                     : most->reason == "no solution"   ? "have no solution"
+                                                                       : "are refused (" + most->reason + ")",
+                                     most->first, most->message));
+  }
 
   for (std::size_t k = 0; k < results; ++k) {
     StrategySummary s;

@@ -1,5 +1,6 @@
 #include "impact3d/io/read_uncertainty.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string_view>
@@ -11,6 +12,7 @@
 #include "impact3d/io/json_fields.hpp"
 #include "impact3d/io/json_tree.hpp"
 #include "impact3d/io/limits.hpp"
+#include "impact3d/uncertainty/moments.hpp"
 
 namespace impact3d::io {
 namespace {
@@ -45,6 +47,7 @@ Distribution distribution(const JsonValue& v, const std::string& at) {
       d.mean = parameter(v, at, "mean"), d.sd = positive(v, at, "sd");
       d.min = parameter(v, at, "min"), d.max = parameter(v, at, "max");
       ordered("min", d.min, "max", d.max, true);
+      if (const std::string problem = uncertainty::truncated_sampling_problem(d); !problem.empty()) fail(at, problem);
       break;
     case Kind::uniform:
       only_keys(v, at, {"path", "distribution", "min", "max"});
@@ -121,8 +124,9 @@ UncertaintySpec read_uncertainty(const std::string& json_text) {
   }
   if (const JsonValue* cs = root.find("correlations")) {
     if (!cs->is(Type::array)) fail("$.correlations", "must be an array");
-    const std::size_t most = spec.inputs.size() * (spec.inputs.size() - 1) / 2;
-    if (cs->size() > most) fail("$.correlations", fmt::format("more than the {} pairs of the inputs", most));
+    // Each pair at most once, so that no more than the inputs' pairs are read: an element past them
+    // names an input that is none, or a pair given before, and is refused by its path.
+    std::vector<char> paired(spec.inputs.size() * spec.inputs.size(), 0);
     for (std::size_t k = 0; k < cs->size(); ++k) {
       const std::string at = fmt::format("$.correlations[{}]", k);
       const JsonValue& c = cs->items[k];
@@ -142,9 +146,9 @@ UncertaintySpec read_uncertainty(const std::string& json_text) {
         pair[j] = found;
       }
       if (pair[0] == pair[1]) fail(member(at, "paths"), "must name two different inputs");
-      for (const auto& earlier : spec.correlations)
-        if ((earlier.a == pair[0] && earlier.b == pair[1]) || (earlier.a == pair[1] && earlier.b == pair[0]))
-          fail(member(at, "paths"), "this pair is correlated twice");
+      char& seen = paired[std::min(pair[0], pair[1]) * spec.inputs.size() + std::max(pair[0], pair[1])];
+      if (seen) fail(member(at, "paths"), "this pair is correlated twice");
+      seen = 1;
       const double rho = need(c, at, "rho", Type::number, "a number").number;
       if (!(rho > -1 && rho < 1)) fail(member(at, "rho"), fmt::format("must be strictly between -1 and 1 (got {})", printable(c.find("rho")->text)));
       spec.correlations.push_back({pair[0], pair[1], rho});

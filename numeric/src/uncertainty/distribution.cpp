@@ -20,21 +20,51 @@ constexpr struct {
 
 TruncatedWindow truncated_window(const Distribution& d) {
   const double a = (d.min - d.mean) / d.sd, b = (d.max - d.mean) / d.sd;
-  // Both ends above the mean: upper tails, Q(a) >= Q(b), so nothing rounds near 1.
-  if (a >= 0) return {true, normal_upper_tail(a), normal_upper_tail(b)};
-  return {false, normal_cdf(a), normal_cdf(b)};
-}
-
-double truncated_normal(const Distribution& d, const TruncatedWindow& w, double u) {
-  // The probability is kept inside the uniform draws' own range, [2^-53, 1 - 2^-53]: where an end's
-  // probability rounds to 0 or 1 (an end beyond 8 sd), the quantile then stays finite.
-  auto inside = [](double p) { return std::clamp(p, 0x1p-53, 1 - 0x1p-53); };
-  const double z = w.upper ? -normal_quantile(inside(w.a - u * (w.a - w.b))) : normal_quantile(inside(w.a + u * (w.b - w.a)));
-  return std::clamp(d.mean + d.sd * z, d.min, d.max);
+  if (a < 0 && b > 0) return {false, false, normal_cdf(a), normal_cdf(b), 0, 0};
+  // One side of the mean: mirrored to the upper side, the nearer end first.
+  const bool lower = b <= 0;
+  const double near = lower ? -b : a, far = lower ? -a : b;
+  const double mills = normal_mills_ratio(near);
+  // Q(far) / Q(near) = e^(-(far - near)(far + near)/2) M(far) / M(near), with no tail formed.
+  const double ratio = portable_exp(-0.5 * (far - near) * (far + near)) * normal_mills_ratio(far) / mills;
+  return {true, lower, near, far, mills, ratio};
 }
 
 namespace {
+
+// The x in [a, b], 0 <= a, with Q(x) = Q(a) (1 - v (1 - ratio)): ln Q(x) - ln Q(a) = T, that is
+// h(d) = -d (2a + d)/2 + ln(M(a + d) / M(a)) - T = 0 in d = x - a, which forms no tail. h decreases
+// (h' = -1/M) and is concave (M' = xM - 1 < 0), so Newton's steps, after the first (the exponential
+// law's d = -T M(a), which lands right of the root), come down to the root monotonically.
+double tail_quantile(const TruncatedWindow& w, double v) {
+  const double a = w.a, width = w.b - w.a;
+  const double T = portable_log((1 - v) + v * w.ratio);  // 1 - v is exact for every draw
+  double d = std::min(-T * w.mills, width);
+  for (int i = 0; i < 200; ++i) {
+    const double x = a + d, m = normal_mills_ratio(x);
+    const double h = -0.5 * d * (2 * a + d) + portable_log(m / w.mills) - T;
+    const double next = std::clamp(d + h * m, 0.0, width);
+    if (!(next < d)) break;  // the descent has stopped: rounding has reached the root
+    const bool close = d - next <= 0x1p-53 * x;
+    d = next;
+    if (close) break;
+  }
+  return a + d;
+}
+
 }  // namespace
+
+double truncated_normal(const Distribution& d, const TruncatedWindow& w, double u) {
+  if (w.tail) {
+    const double z = w.lower ? -tail_quantile(w, 1 - u) : tail_quantile(w, u);
+    return std::clamp(d.mean + d.sd * z, d.min, d.max);
+  }
+  // Across the mean, [Phi(a), Phi(b)] holds 1/2 and the window's mass is not small: kept inside the
+  // draws' own range, [2^-53, 1 - 2^-53], whose resolution no end beyond 8 sd would change.
+  auto inside = [](double p) { return std::clamp(p, 0x1p-53, 1 - 0x1p-53); };
+  const double z = normal_quantile(inside(w.a + u * (w.b - w.a)));
+  return std::clamp(d.mean + d.sd * z, d.min, d.max);
+}
 
 std::string_view kind_name(Distribution::Kind k) {
   for (const auto& n : kNames)

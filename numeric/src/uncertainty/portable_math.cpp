@@ -27,6 +27,27 @@ double horner(const double (&c)[N], double x) {
   return v;
 }
 
+// Cody's erfc(y) = e^(-y^2) P(y) / Q(y) for y = x / sqrt 2 in [0.46875, 4] (Math. Comp. 23 (1969)
+// 631-637, table III, about 18 digits): P(y) / Q(y), so that erfc(y) = e^(-x^2/2) times it.
+double cody_ratio(double x) {
+  static constexpr double p[9] = {1.23033935479799725272e3, 2.05107837782607146532e3, 1.71204761263407058314e3,
+                                  8.81952221241769090411e2, 2.98635138197400131132e2, 6.61191906371416294775e1,
+                                  8.88314979438837594118e0, 5.64188496988670089180e-1, 2.15311535474403846343e-8};
+  static constexpr double q[9] = {1.23033935480374942043e3, 3.43936767414372163696e3, 4.36261909014324715820e3,
+                                  3.29079923573345962678e3, 1.62138957456669018874e3, 5.37181101862009857509e2,
+                                  1.17693950891312499305e2, 1.57449261107098347253e1, 1.0};
+  const double y = x * 0.70710678118654752440;
+  return horner(p, y) / horner(q, y);
+}
+
+// Laplace's continued fraction Q = phi / (x + 1/(x + 2/(x + 3/(x + ...)))), from a fixed depth up:
+// at x = 5.5 its 60th convergent is well within 2^-56.
+double laplace_fraction(double x) {
+  double f = x;
+  for (int k = 60; k >= 1; --k) f = x + k / f;
+  return f;
+}
+
 }  // namespace
 
 double portable_log(double x) {
@@ -105,25 +126,27 @@ double normal_upper_tail(double x) {
     }
     return 0.5 - phi * sum;
   }
-  if (x < 5.5) {
-    // Cody's erfc(y) = e^(-y^2) P(y) / Q(y) for y = x / sqrt 2 in [0.46875, 4] (Math. Comp. 23 (1969)
-    // 631-637, table III, about 18 digits), with e^(-y^2) = e^(-x^2/2) taken from x itself.
-    static constexpr double p[9] = {1.23033935479799725272e3, 2.05107837782607146532e3, 1.71204761263407058314e3,
-                                    8.81952221241769090411e2, 2.98635138197400131132e2, 6.61191906371416294775e1,
-                                    8.88314979438837594118e0, 5.64188496988670089180e-1, 2.15311535474403846343e-8};
-    static constexpr double q[9] = {1.23033935480374942043e3, 3.43936767414372163696e3, 4.36261909014324715820e3,
-                                    3.29079923573345962678e3, 1.62138957456669018874e3, 5.37181101862009857509e2,
-                                    1.17693950891312499305e2, 1.57449261107098347253e1, 1.0};
-    const double y = x * 0.70710678118654752440;
-    return 0.5 * gauss * (horner(p, y) / horner(q, y));
+  if (x < 5.5) {  // Cody's erfc, with e^(-y^2) = e^(-x^2/2) taken from x itself
+    return 0.5 * gauss * cody_ratio(x);
   }
-  // Laplace's continued fraction Q = phi / (x + 1/(x + 2/(x + 3/(x + ...)))), from a fixed depth up:
-  // at x = 5.5 its 60th convergent is well within 2^-56.
-  double f = x;
-  for (int k = 60; k >= 1; --k) f = x + k / f;
-  return phi / f;
+  return phi / laplace_fraction(x);
 }
 
 double normal_cdf(double x) { return normal_upper_tail(-x); }
+
+double normal_mills_ratio(double x) {
+  if (!(x >= 0)) return kNaN;
+  if (x == kInf) return 0;
+  if (x < 0.6640625) {  // 1/(2 phi) less the series of normal_upper_tail; phi >= 0.32 here
+    double term = x, sum = x;
+    for (int n = 1; n < 60 && term > sum * 0x1p-56; ++n) {
+      term *= x * x / (2 * n + 1);
+      sum += term;
+    }
+    return 1.25331413731550025121 * portable_exp(0.5 * x * x) - sum;
+  }
+  if (x < 5.5) return 1.25331413731550025121 * cody_ratio(x);  // sqrt(pi/2) P/Q
+  return 1 / laplace_fraction(x);
+}
 
 }  // namespace impact3d::uncertainty

@@ -106,13 +106,15 @@ struct MonteCarloRun {
   std::vector<std::string> reasons;
 };
 
-// The largest number of values a run keeps (samples x results x outputs, 8 bytes each): percentiles
-// need every value (README, "Limits").
-inline constexpr std::uint64_t kMaxKeptValues = 300'000'000;
+// The memory a run may take: every output of every sample is kept for the percentiles (README,
+// "Limits"). A run is sized before its first sample by run_bytes_per_sample.
+inline constexpr std::uint64_t kMaxRunBytes = std::uint64_t{2} << 30;
+std::uint64_t run_bytes_per_sample(std::size_t results, std::size_t inputs, bool keep_samples);
 
 // Throws CaseError: for the uncertainty file's problems at its JSON path ("$.inputs[2].path: ...",
-// "$.inputs[0].distribution: ..."), for the case's at the case's, and for a run that would keep more
-// than kMaxKeptValues at "$.samples".
+// "$.inputs[0].distribution: ..."), for the case's at the case's, for a run that would take more
+// than kMaxRunBytes at "$.samples", and for a strategy that solved no sample at "$" (its commonest
+// reason named).
 MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u, const MonteCarloOptions& o);
 
 // The contract's JSON document (many-cases.md), and the text report.

@@ -25,17 +25,19 @@ bool kind_of(std::string_view name, Distribution::Kind& k);
 
 // The quantile at u in (0, 1), for a distribution whose parameters are valid (the reader's checks:
 // sd, sigma > 0, min < max, min <= mode <= max, weights >= 0 with a positive sum). A truncated normal
-// inverts Phi over [Phi(a), Phi(b)], in the upper tail when the window is above the mean so that no
-// probability near 1 is formed; the result is clamped to [min, max] against rounding.
+// across its mean inverts Phi over [Phi(a), Phi(b)]; one wholly on one side of its mean is inverted from
+// its nearer end in logarithms of Mills' ratio (portable_math.hpp), so that a window any number of sd
+// out keeps its digits where its tail probabilities are below the smallest double. The result is
+// clamped to [min, max] against rounding.
 double quantile(const Distribution& d, double u);
 
-// What a truncated normal's quantile inverts over: [Phi(a), Phi(b)] for the standardized ends a, b, or,
-// when the window is above the mean (upper), the upper tails [Q(a), Q(b)]. It depends on the
-// distribution alone, so a sampler computes it once; truncated_normal(d, truncated_window(d), u) is
-// quantile(d, u).
+// What a truncated normal's quantile inverts over, computed once per distribution:
+// truncated_normal(d, truncated_window(d), u) is quantile(d, u). Across the mean (tail false): a, b are
+// Phi of the standardized ends. On one side (tail): a <= b the standardized ends mirrored to the upper
+// side (lower: the window is below the mean), mills M(a) and ratio Q(b) / Q(a).
 struct TruncatedWindow {
-  bool upper;
-  double a, b;
+  bool tail, lower;
+  double a, b, mills, ratio;
 };
 TruncatedWindow truncated_window(const Distribution& d);
 double truncated_normal(const Distribution& d, const TruncatedWindow& w, double u);

@@ -3,6 +3,8 @@
 // portable_math.hpp's exp and normal CDF and IEEE-rounded arithmetic: the same bits on every platform.
 #pragma once
 
+#include <string>
+
 #include "impact3d/uncertainty/distribution.hpp"
 
 namespace impact3d::uncertainty {
@@ -13,5 +15,12 @@ struct Moments {
 
 // For a distribution whose parameters are valid (the reader's checks).
 Moments moments(const Distribution& d);
+
+// Why a truncated normal's samples would not resolve its law to double precision, or empty: its sd is
+// below 2^-32 of the values it takes (their magnitude, and their distance from the normal's mean),
+// so that fewer than 2^20 doubles would lie across one sd. Beyond the magnitudes, the sampler keeps
+// its digits any number of sd out (distribution.hpp); this bounds a window's distance out to about
+// 2^16 sd, and its width to about 2^-30 of its values.
+std::string truncated_sampling_problem(const Distribution& d);
 
 }  // namespace impact3d::uncertainty

@@ -25,4 +25,10 @@ double normal_quantile(double p);
 double normal_cdf(double x);
 double normal_upper_tail(double x);
 
+// Mills' ratio M(x) = Q(x) / phi(x) for x >= 0 (NaN below), 0 at infinity: the tail without its
+// Gaussian factor, so that tails far beyond the smallest double (Q(38.5) ~ 1e-324) keep their digits,
+// as log Q(x) = -x^2/2 - ln sqrt(2 pi) + ln M(x). M decreases from sqrt(pi/2), M(x) ~ 1/x, and
+// M' = x M - 1.
+double normal_mills_ratio(double x);
+
 }  // namespace impact3d::uncertainty

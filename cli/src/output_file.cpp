@@ -1,0 +1,182 @@
+#include "output_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <climits>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "user_error.hpp"
+
+namespace impact3d::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Hidden, beside the target, named for it (cut so that the name stays within NAME_MAX).
+std::string temporary_name(const std::string& name, int attempt) {
+  static std::atomic<unsigned> counter{0};
+  const auto now = static_cast<unsigned long long>(std::chrono::steady_clock::now().time_since_epoch().count());
+  return fmt::format(".{}.{:x}-{:x}-{:x}.tmp", name.substr(0, 160), static_cast<unsigned>(::getpid()), counter++,
+                     (now >> 4) + static_cast<unsigned long long>(attempt));
+}
+
+const char* kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISCHR(mode)) return "a character device";
+  return "not a regular file";
+}
+
+}  // namespace
+
+int write_all(int fd, std::string_view text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return errno;
+    if (n == 0) return ENOSPC;
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
+Replacement::Replacement(int dir_fd, std::string name, std::string shown, int mode_of_old)
+    : dir_fd_(dir_fd), name_(std::move(name)), shown_(std::move(shown)) {
+  // The kernel applies the umask to a new file's 0666; an old file's permissions are kept.
+  for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
+    temp_ = temporary_name(name_, attempt);
+    fd_ = ::openat(dir_fd_, temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY, 0666);
+    if (fd_ < 0 && errno != EEXIST) break;
+  }
+  if (fd_ < 0) {
+    const int err = errno;
+    throw UserError(fmt::format("{}: cannot write the file: no temporary file can be made beside it ({})", shown_, std::strerror(err)));
+  }
+  if (fd_ <= 2) {  // never one of the standard streams, closed when the program started
+    const int moved = ::fcntl(fd_, F_DUPFD_CLOEXEC, 3);
+    ::close(fd_);
+    fd_ = moved;
+    if (fd_ < 0) fail("cannot write the file", errno);
+  }
+  if (mode_of_old >= 0 && ::fchmod(fd_, static_cast<mode_t>(mode_of_old) & 07777) != 0) fail("cannot write the file", errno);
+}
+
+Replacement::~Replacement() {
+  if (fd_ >= 0) ::close(fd_);
+  if (!temp_.empty()) ::unlinkat(dir_fd_, temp_.c_str(), 0);
+}
+
+void Replacement::fail(const char* doing, int error) {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  ::unlinkat(dir_fd_, temp_.c_str(), 0);
+  temp_.clear();
+  throw UserError(fmt::format("{}: {} ({}); nothing was replaced", shown_, doing, std::strerror(error)));
+}
+
+void Replacement::commit() {
+  if (::fsync(fd_) != 0) fail("cannot write the file", errno);
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) fail("cannot write the file", errno);
+  if (::renameat(dir_fd_, temp_.c_str(), dir_fd_, name_.c_str()) != 0) fail("cannot replace the file", errno);
+  temp_.clear();
+  ::fsync(dir_fd_);  // the rename itself on the disk; a file system that cannot says nothing worse
+}
+
+OutputFile::OutputFile(const std::string& path) : path_(path) {
+  if (path.empty()) throw UserError("an output file name is empty");
+  struct stat st {};
+  std::string target = path;
+  int old_mode = -1;
+  if (::stat(path.c_str(), &st) == 0) {
+    if (S_ISREG(st.st_mode)) {
+      old_mode = static_cast<int>(st.st_mode);
+      // A link is followed: the file it names is the one replaced, the link kept.
+      struct stat lst {};
+      if (::lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) {
+        char* real = ::realpath(path.c_str(), nullptr);
+        if (!real) throw UserError(fmt::format("{}: cannot write the file ({})", path, std::strerror(errno)));
+        target = real;
+        std::free(real);
+      }
+    } else if (S_ISCHR(st.st_mode) || S_ISFIFO(st.st_mode)) {
+      // A FIFO no one reads would keep the program waiting: opened without blocking, refused then.
+      stream_fd_ = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+      if (stream_fd_ < 0) {
+        const int err = errno;
+        if (err == ENXIO) throw UserError(fmt::format("{}: cannot write the file (a FIFO that nothing reads)", path));
+        throw UserError(fmt::format("{}: cannot write the file ({})", path, std::strerror(err)));
+      }
+      ::fcntl(stream_fd_, F_SETFL, ::fcntl(stream_fd_, F_GETFL) & ~O_NONBLOCK);
+      if (stream_fd_ <= 2) {
+        const int moved = ::fcntl(stream_fd_, F_DUPFD_CLOEXEC, 3);
+        ::close(stream_fd_);
+        stream_fd_ = moved;
+        if (stream_fd_ < 0) throw UserError(fmt::format("{}: cannot write the file ({})", path, std::strerror(errno)));
+      }
+      return;
+    } else {
+      throw UserError(fmt::format("{}: cannot write the file ({}: only a file, a FIFO or a character device is written)", path,
+                                  kind_of(st.st_mode)));
+    }
+  } else if (errno != ENOENT) {
+    throw UserError(fmt::format("{}: cannot write the file ({})", path, std::strerror(errno)));
+  } else if (struct stat lst {}; ::lstat(path.c_str(), &lst) == 0) {
+    throw UserError(fmt::format("{}: cannot write the file (a link to nothing)", path));
+  }
+  const fs::path p(target);
+  const std::string name = p.filename().string();
+  if (name.empty() || name == "." || name == "..") throw UserError(fmt::format("{}: cannot write the file (not a file name)", path));
+  const std::string dir = p.has_parent_path() ? p.parent_path().string() : ".";
+  dir_fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir_fd_ < 0) throw UserError(fmt::format("{}: cannot write the file: its directory cannot be opened ({})", path, std::strerror(errno)));
+  try {
+    replacement_ = std::make_unique<Replacement>(dir_fd_, name, path, old_mode);
+  } catch (...) {
+    ::close(dir_fd_);
+    throw;
+  }
+}
+
+OutputFile::~OutputFile() {
+  replacement_.reset();
+  if (dir_fd_ >= 0) ::close(dir_fd_);
+  if (stream_fd_ >= 0) ::close(stream_fd_);
+}
+
+int OutputFile::fd() const { return replacement_ ? replacement_->fd() : stream_fd_; }
+
+void OutputFile::write(std::string_view text) {
+  if (const int err = write_all(fd(), text); err != 0) {
+    if (replacement_) {
+      replacement_.reset();
+      throw UserError(fmt::format("{}: cannot write the file ({}); nothing was replaced", path_, std::strerror(err)));
+    }
+    throw UserError(fmt::format("{}: cannot write the file ({})", path_, std::strerror(err)));
+  }
+}
+
+void OutputFile::commit() {
+  if (replacement_) {
+    replacement_->commit();
+    return;
+  }
+  const int fd = stream_fd_;
+  stream_fd_ = -1;
+  if (::close(fd) != 0) throw UserError(fmt::format("{}: cannot write the file ({})", path_, std::strerror(errno)));
+}
+
+}  // namespace impact3d::cli
