@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <flint/fmpq.h>
+#include <fmt/format.h>
 
 #include "impact3d/numeric/certified.hpp"
 #include "impact3d/numeric/exact_analysis.hpp"
@@ -281,6 +282,84 @@ TEST_CASE("certified balls hold the 100-digit solve of seeded random cases", "[c
   CHECK(cases == 12);
   CHECK(undecided == 0);
   CHECK(compared == 12 * 10 * 12);
+}
+
+namespace {
+
+// A seeded 3D case as a file would give it: decimal angles (so the rotations are orthonormal in exact
+// arithmetic, as the constraint rows assume), products of inertia, angular velocities, pitch and roll.
+io::CaseSpec random_3d_case(std::mt19937_64& g, const std::string& restitution, const std::string& strategies) {
+  std::uniform_int_distribution<int> i(-999, 999);
+  const auto d = [&](double scale) { return fmt::format("{:.3f}", scale * i(g) / 1000.0); };
+  const auto vehicle = [&](double vx) {
+    const std::string j01 = d(40);
+    return fmt::format(R"({{"name": "v", "mass": {}, "inertia": [[{}, {}, 0], [{}, {}, 0], [0, 0, {}]],
+      "orientation_deg": {{"yaw": {}, "pitch": {}, "roll": {}}}, "velocity": [{}, {}, {}],
+      "angular_velocity": [{}, {}, {}], "impulse_center": [{}, {}, {}]}})",
+                       1300 + (i(g) + 999) / 2, 600, j01, j01, 2500, 2800, d(180), d(8), d(8), vx, d(6), d(1),
+                       d(0.5), d(0.5), d(1), d(2), d(1), d(0.3));
+  };
+  return io::read_case(R"({"name": "seeded 3D", "units": "SI", "vehicles": [)" + vehicle(12) + ", " + vehicle(-12) +
+                       R"(], "contact": {"normal_yaw_deg": )" + d(180) + R"(, "normal_pitch_deg": )" + d(10) +
+                       R"(, "tangent_roll_deg": )" + d(30) + R"(}, "restitution": )" + restitution +
+                       R"(, "strategy": )" + strategies + "}");
+}
+
+}  // namespace
+
+// A final sliding that is the strategy's own constraint (a Full Impact's V_rf = -eps V_ri along t and z,
+// eqs 10-12; Brach's critical ratio, eqs 25-27; Wach capped at its CIR, eq 19) is computed as a ball
+// holding 0. Those questions are answered by the constraint rows (constraint_rows.hpp), "by
+// construction", never left undecided; the answers are those of the 100-digit solve's rounding rule, an
+// independent route, on seeded 3D cases at restitution 0 (where every such sliding stops) and above.
+TEST_CASE("the zeros a strategy's constraint rows impose are decided by construction, as the 100-digit solve finds them",
+          "[certified]") {
+  std::mt19937_64 g(20261201);
+  const std::string strategies = R"([{"name": "pc-crash", "mu": 50}, {"name": "brach", "mu_t": "critical", "mu_z": "critical"},
+      {"name": "brach", "mu_t": "critical", "mu_z": 0.1}, {"name": "brach", "mu_t": 0.1, "mu_z": "critical"},
+      {"name": "wach", "mu": 50, "limit": "cir"}])";
+  namespace n = decision_names;
+  int solutions = 0, by_rows = 0, cases = 0;
+  while (cases < 12) {
+    io::CaseSpec c;
+    Analysis<mp::float100> a100;
+    try {
+      c = random_3d_case(g, cases % 3 == 0 ? "0" : "0.3", strategies);
+      a100 = analyze(io::to_scene<mp::float100>(c), io::to_strategies<mp::float100>(c));
+    } catch (const io::CaseError&) {
+      continue;  // not approaching: drawn again
+    }
+    ++cases;
+    const BallBits bits(256);
+    const CertifiedAnalysis b = certified_analyze(io::to_scene<Ball>(c), io::to_strategies<Ball>(c));
+    for (std::size_t k = 0; k < c.strategies.size(); ++k) {
+      INFO("case " << cases << ", strategy " << k);
+      const auto& sb = b.analysis.solutions[k];
+      const auto& s100 = a100.solutions[k];
+      REQUIRE(sb.impulse.regime == (k == 0 ? Regime::full : k == 4 ? Regime::capped : Regime::as_given));
+      bool rows = false;
+      for (const auto& d : b.decisions[k]) {
+        INFO(d.name << ": " << d.detail);
+        if (d.name == n::swerve || d.name == n::volume || d.name == n::z_sliding) CHECK(d.status != DecisionStatus::undecided);
+        if (d.name == n::constraint_rows) {
+          rows = true;
+          CHECK(d.status == DecisionStatus::by_construction);
+          CHECK(d.detail.find("by construction") != std::string::npos);
+        }
+      }
+      CHECK(rows);
+      by_rows += rows;
+      CHECK(sb.t_change == s100.t_change);
+      CHECK(sb.z_change == s100.z_change);
+      CHECK(sb.volume == s100.volume);
+      CHECK(sb.reversed == s100.reversed);
+      CHECK(sb.swerve_deg.has_value() == s100.swerve_deg.has_value());
+      if (sb.swerve_deg && s100.swerve_deg) CHECK(meets(*sb.swerve_deg, *s100.swerve_deg, mp::float100(1e-60)));
+      ++solutions;
+    }
+  }
+  CHECK(solutions == 12 * 5);
+  CHECK(by_rows == 12 * 5);
 }
 
 TEST_CASE("doubling the bits narrows the enclosures by about the factor the bits promise", "[certified]") {

@@ -239,9 +239,19 @@ TEST_CASE("a run that cannot solve a sample is refused up front, one that solved
   fs::remove_all(dir);
 }
 
+TEST_CASE("a seed and a sample count are read in decimal: 010 is ten, not octal eight") {
+  const Run r = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "010", "--seed", "010",
+                                           "--format", "json"});
+  REQUIRE(r.status == 0);
+  const auto doc = nlohmann::json::parse(r.out);
+  CHECK(doc["samples"] == 10);
+  CHECK(doc["seed"] == 10);
+}
+
 TEST_CASE("a run is sized before it starts: one past the memory limit is refused, saying how to fit") {
-  // 1.1e6 samples of four strategies: within the samples' limit, but 2160 bytes a sample (67 outputs
-  // of 8 bytes a strategy, 16 for the summaries' columns) is 2266 MiB, past the 2048 a run may take.
+  // 1.1e6 samples of four strategies: within the samples' limit, but 2336 bytes a sample (67 outputs
+  // of 8 bytes a strategy, 48 on each of the 4 summaries' threads) is 2451 MiB, past the 2048 a run may
+  // take. Run within 512 MiB of address space: refused before anything is allocated.
   const fs::path dir = scratch();
   const fs::path u = dir / "u.json";
   std::ofstream(u) << R"({"inputs": [{"path": "$.vehicles[1].velocity[1]", "distribution": "uniform", "min": 10, "max": 12}]})";
@@ -250,8 +260,8 @@ TEST_CASE("a run is sized before it starts: one past the memory limit is refused
                             "", "", 20, 512);
   CHECK(r.status == 1);
   CHECK(r.out.empty());
-  CHECK(r.err == "impact3d: error: --samples: 1100000 samples of 4 results would take 2266 MiB (2160 bytes a sample), more than "
-                 "the 2048 MiB a run may take: every output of every sample is kept for the percentiles; take at most 994205 "
+  CHECK(r.err == "impact3d: error: --samples: 1100000 samples of 4 results would take 2451 MiB (2336 bytes a sample), more than "
+                 "the 2048 MiB a run may take: every output of every sample is kept for the percentiles; take at most 919299 "
                  "samples, or fewer strategies\n");
   fs::remove_all(dir);
 }

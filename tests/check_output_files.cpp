@@ -108,13 +108,13 @@ TEST_CASE("on a full disk every writer leaves the old file whole, no partial fil
     int status;
   };
   const std::vector<Writer> writers = {
-      {"report -o", {"report", kCase, "-o", "OUT", "--no-figures"}, "r.html", 1},
+      {"report -o", {"report", kCase, "-o", "OUT", "--no-figures"}, "r.html", 3},
       {"batch -o", {"batch", cases.string(), "-o", "OUT"}, "b.jsonl", 3},
       {"batch -o --format csv", {"batch", cases.string(), "--format", "csv", "-o", "OUT"}, "b.csv", 3},
-      {"montecarlo --samples-out", {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "300", "--samples-out", "OUT"}, "s.csv", 1},
-      {"plot -o DIR", {"plot", kCase, "-o", "OUT"}, "figures/contact_plane.svg", 1},
-      {"montecarlo --plot DIR", {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "300", "--plot", "OUT"}, "figures/mc0_hist_vehicles_0_delta_v_magnitude.svg", 1},
-      {"sensitivity --plot DIR", {"sensitivity", kCase, "--plot", "OUT"}, "figures/sens0_tornado_dv0.svg", 1},
+      {"montecarlo --samples-out", {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "300", "--samples-out", "OUT"}, "s.csv", 3},
+      {"plot -o DIR", {"plot", kCase, "-o", "OUT"}, "figures/contact_plane.svg", 3},
+      {"montecarlo --plot DIR", {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "300", "--plot", "OUT"}, "figures/mc0_hist_vehicles_0_delta_v_magnitude.svg", 3},
+      {"sensitivity --plot DIR", {"sensitivity", kCase, "--plot", "OUT"}, "figures/sens0_tornado_dv0.svg", 3},
   };
   int checked = 0;
   for (const Writer& w : writers) {
@@ -169,7 +169,7 @@ TEST_CASE("a character device and a FIFO are written as streams and never replac
         std::vector<std::string>{"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "50", "--samples-out", full.string()}}) {
     const Run r = run_argv(args);
     INFO(args[0] << ": " << r.err);
-    CHECK(r.status == 1);
+    CHECK(r.status == 3);
     CHECK(r.out.empty());
     CHECK(lines(r.err) == 1);
     CHECK(r.err.find(std::strerror(ENOSPC)) != std::string::npos);
@@ -194,7 +194,7 @@ TEST_CASE("a character device and a FIFO are written as streams and never replac
     std::replace(to_file.begin(), to_file.end(), std::string("OUT"), file.string());
     std::replace(to_fifo.begin(), to_fifo.end(), std::string("OUT"), fifo.string());
     REQUIRE(run_argv(to_file).status == 0);
-    const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+    const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);  // not the program's too
     REQUIRE(reader >= 0);
     std::string got;
     const auto drain = [&] {
@@ -269,3 +269,42 @@ TEST_CASE("a directory, a socket and a link to nothing are refused; a link is fo
   CHECK(fs::is_fifo(dir / "figs" / "contact_plane.svg"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("a run ended by a signal leaves no temporary; a FIFO whose reader quits is one line, exit 3") {
+  const fs::path dir = scratch("signal");
+  const fs::path samples = dir / "s.csv";
+  write(samples, "old");
+  // Terminated while it samples: the temporary, made before the run, is removed by the handler.
+  bool started = false;
+  const Run r = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "200000", "--jobs", "1",
+                                           "--samples-out", samples.string()},
+                            "", "", 60, 2048, [&] {
+                              for (const std::string& n : names(dir)) started = started || n[0] == '.';
+                              return started;
+                            });
+  CHECK(started);
+  CHECK(r.status == -1);  // killed by SIGTERM, its default action
+  CHECK(names(dir) == std::vector<std::string>{"s.csv"});
+  CHECK(slurp(samples) == "old");
+
+  // A reader that takes ten bytes and goes: EPIPE, not a silent death by SIGPIPE.
+  const fs::path fifo = dir / "fifo";
+  REQUIRE(::mkfifo(fifo.c_str(), 0644) == 0);
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);  // not the program's too
+  REQUIRE(reader >= 0);
+  bool closed = false;
+  // Samples of some megabytes, past what the FIFO holds, so that writes come after the reader has gone.
+  const Run quit = run_program(IMPACT3D_CLI, {"montecarlo", kCase, "--uncertainty", kUncertainty, "--samples", "3000",
+                                              "--samples-out", fifo.string()}, "", "", 20, 2048, [&] {
+    char buf[10];
+    if (!closed && ::read(reader, buf, sizeof buf) > 0) ::close(reader), closed = true;
+    return false;
+  });
+  if (!closed) ::close(reader);
+  CHECK(closed);
+  CHECK(quit.status == 3);
+  CHECK(quit.out.empty());
+  CHECK(quit.err == "impact3d: error: --samples-out: " + fifo.string() + ": cannot write the file (" + std::strerror(EPIPE) + ")\n");
+  fs::remove_all(dir);
+}
+

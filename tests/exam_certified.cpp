@@ -180,7 +180,7 @@ TEST_CASE("every number of a certified document has an enclosure that holds it",
     }
   };
   walk(doc, "");
-  CHECK(numbers > 500);
+  CHECK(numbers > 400);  // Figure 8's four results (413 numbers), with no alternative: every decision is decided
   CHECK(static_cast<int>(enclosures.size()) == numbers);
 }
 

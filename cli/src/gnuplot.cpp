@@ -140,7 +140,7 @@ std::unique_ptr<Replacement> OutputDir::replace(const std::string& name) const {
 void OutputDir::write(const std::string& name, std::string_view text) const {
   const auto file = replace(name);
   if (const int err = write_all(file->fd(), text); err != 0)
-    throw UserError(fmt::format("{}/{}: cannot write ({}); nothing was replaced", path_, name, std::strerror(err)));
+    throw OutputLost(fmt::format("{}/{}: cannot write ({}); nothing was replaced", path_, name, std::strerror(err)));
   file->commit();
 }
 
@@ -228,7 +228,7 @@ std::string run_gnuplot(const OutputDir& dir, const std::string& script, const s
   if (status != 0)
     throw UserError(fmt::format("gnuplot failed on {} (exit status {}): {}", script, status, summary_line(messages)));
   if (write_error)
-    throw UserError(fmt::format("{}/{}: cannot write ({}); nothing was replaced", dir.path(), image, std::strerror(write_error)));
+    throw OutputLost(fmt::format("{}/{}: cannot write ({}); nothing was replaced", dir.path(), image, std::strerror(write_error)));
   file->commit();
   return summary_line(messages);
 }

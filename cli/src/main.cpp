@@ -3,7 +3,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <new>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -17,6 +19,7 @@
 #include "impact3d/verification/verify.hpp"
 #include "batch.hpp"
 #include "montecarlo.hpp"
+#include "output_file.hpp"
 #include "plot.hpp"
 #include "report.hpp"
 #include "reconstruct.hpp"
@@ -26,8 +29,8 @@
 namespace {
 
 // One policy for every subcommand: 0 done, 1 bad input (one line naming the file and the JSON path, or
-// a strategy with no solution), 2 command-line usage, 3 internal error. Every error is one line on
-// stderr with the user's text escaped, and nothing on stdout.
+// a strategy with no solution), 2 command-line usage, 3 internal error or an output lost. Every error
+// is one line on stderr with the user's text escaped, and nothing on stdout.
 constexpr int kBadInput = 1;
 constexpr int kUsage = 2;
 constexpr int kInternal = 3;
@@ -50,6 +53,8 @@ int guarded(const std::string& file, F&& body) {
     return error_line(in_file(e.line()), kBadInput);
   } catch (const SolveError& e) {
     return error_line(in_file(std::string("no solution: ") + e.what()), kBadInput);
+  } catch (const cli::OutputLost& e) {
+    return error_line(e.what(), kInternal);
   } catch (const cli::UserError& e) {
     return error_line(e.what(), kBadInput);
   } catch (const std::bad_alloc&) {
@@ -71,18 +76,25 @@ auto naming_strategies(const impact3d::io::CaseSpec& spec, F&& body) {
 
 // CLI11 converts "-1" to an unsigned 2^64 - 1 and lets a NaN through a range: the options' texts are
 // checked as the files' numbers are, before any conversion.
-std::string seed_problem(const std::string& text) {
+// A seed or a count is read here, in decimal, from the option's text: CLI11 would read "010" as octal.
+std::optional<std::uint64_t> seed_of(const std::string& text) {
   std::uint64_t v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-    return "must be a whole number from 0 to 18446744073709551615";
-  return {};
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+std::string seed_problem(const std::string& text) {
+  return seed_of(text) ? std::string() : "must be a whole number from 0 to 18446744073709551615, in decimal digits";
 }
 
 std::string tolerance_problem(const std::string& text) {
   double v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v) || v < 0 || v > 1e300)
+  const bool whole = !text.empty() && end == text.data() + text.size();
+  // A value too small for a double (1e-400) is a tolerance of 0, as it reads.
+  const bool underflow = ec == std::errc::result_out_of_range && std::fabs(std::strtod(text.c_str(), nullptr)) < 1;
+  if (!whole || (ec != std::errc() && !underflow) || !std::isfinite(v) || v < 0 || v > 1e300)
     return "must be a finite number from 0 to 1e300";
   return {};
 }
@@ -164,9 +176,15 @@ int main(int argc, char** argv) {
   mc_cmd->add_option("--uncertainty", mopt.uncertainty_path, "uncertainty file: the inputs' distributions (README, \"Monte Carlo\")")
       ->required();
   mc_cmd->add_option("--format", mopt.format, "text summary (default) or contract JSON")->check(CLI::IsMember({"text", "json"}));
-  mc_cmd->add_option("--samples", mopt.samples, "replace the file's number of samples")
-      ->check(CLI::Range(std::uint64_t{1}, impact3d::io::kMaxSamples));
-  mc_cmd->add_option("--seed", mopt.seed, "replace the file's seed (0 to 2^64 - 1)")->check(seed_problem);
+  std::string mc_samples;
+  mc_cmd->add_option("--samples", mc_samples, "replace the file's number of samples")->check([](const std::string& text) {
+    const auto n = seed_of(text);
+    return n && *n >= 1 && *n <= impact3d::io::kMaxSamples
+               ? std::string()
+               : fmt::format("must be a whole number from 1 to {}, in decimal digits", impact3d::io::kMaxSamples);
+  });
+  std::string mc_seed;
+  mc_cmd->add_option("--seed", mc_seed, "replace the file's seed (0 to 2^64 - 1)")->check(seed_problem);
   mc_cmd->add_option("--jobs", mopt.jobs, "threads (default: every core); the output does not depend on it")
       ->check(CLI::Range(1, 1024));
   mc_cmd->add_option("--samples-out", mopt.samples_out, "also write every sample's inputs and outputs to this CSV file");
@@ -231,7 +249,8 @@ int main(int argc, char** argv) {
                          "N, or both");
   verify_cmd->add_option("--random", vopt.random, "add this many seeded random collisions (at most 100000)")
       ->check(CLI::Range(0, 100000));
-  verify_cmd->add_option("--seed", vopt.seed, "seed of the random collisions (default 1)")->check(seed_problem);
+  std::string verify_seed;
+  verify_cmd->add_option("--seed", verify_seed, "seed of the random collisions (default 1)")->check(seed_problem);
   verify_cmd->add_flag("--certify", vopt.certify,
                        "also enclose each case's exact result in ball arithmetic and prove that every precision's "
                        "results of both engines lie within their stated rounding bounds of it");
@@ -291,6 +310,9 @@ int main(int argc, char** argv) {
       bopt.engine = batch_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
       return impact3d::cli::batch(bopt);
     });
+  if (!mc_seed.empty()) mopt.seed = seed_of(mc_seed);
+  if (!mc_samples.empty()) mopt.samples = seed_of(mc_samples);
+  if (!verify_seed.empty()) vopt.seed = *seed_of(verify_seed);
   if (mc_cmd->parsed())
     return guarded("", [&] {
       mopt.engine = mc_engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;

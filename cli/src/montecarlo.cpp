@@ -97,12 +97,12 @@ int montecarlo(const MonteCarloCliOptions& o) {
       if (!error) error = write_all(samples_file->fd(), piece);
     });
     if (error)
-      throw UserError(fmt::format("--samples-out: {}: cannot write the file ({}){}", o.samples_out, std::strerror(error),
-                                  samples_file->replaces() ? "; nothing was replaced" : ""));
+      throw OutputLost(fmt::format("--samples-out: {}: cannot write the file ({}){}", o.samples_out, std::strerror(error),
+                                   samples_file->replaces() ? "; nothing was replaced" : ""));
     try {
       samples_file->commit();
-    } catch (const UserError& e) {
-      throw UserError(std::string("--samples-out: ") + e.what());
+    } catch (const OutputLost& e) {
+      throw OutputLost(std::string("--samples-out: ") + e.what());
     }
   }
   if (!o.plot.out_dir.empty()) montecarlo_plot(run, o.plot);

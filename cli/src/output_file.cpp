@@ -1,6 +1,8 @@
 #include "output_file.hpp"
 
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -11,10 +13,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <iterator>
 
 #include <fmt/format.h>
 
-#include "user_error.hpp"
 
 namespace impact3d::cli {
 namespace {
@@ -29,6 +31,54 @@ std::string temporary_name(const std::string& name, int attempt) {
                      (now >> 4) + static_cast<unsigned long long>(attempt));
 }
 
+// The temporaries not yet renamed, for the signal handler to remove: written before they are
+// published (dir, release), read by the handler (acquire). A fixed table: no allocation in the handler.
+struct Pending {
+  std::atomic<int> dir{-1};
+  char name[NAME_MAX + 1];
+};
+Pending pending[16];
+
+extern "C" void remove_pending(int sig) {
+  for (Pending& p : pending)
+    if (const int dir = p.dir.load(std::memory_order_acquire); dir >= 0) ::unlinkat(dir, p.name, 0);
+  ::raise(sig);  // the default action, SA_RESETHAND having restored it, once this handler returns
+}
+
+void handle_signals_once() {
+  static const bool installed = [] {
+    for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
+      struct sigaction old {};
+      if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL || (old.sa_flags & SA_SIGINFO)) continue;
+      struct sigaction sa {};
+      sa.sa_handler = remove_pending;
+      sa.sa_flags = SA_RESETHAND;
+      sigemptyset(&sa.sa_mask);
+      ::sigaction(sig, &sa, nullptr);
+    }
+    return true;
+  }();
+  (void)installed;
+}
+
+int publish(int dir, const std::string& name) {
+  if (name.size() > NAME_MAX) return -1;
+  for (int i = 0; i < static_cast<int>(std::size(pending)); ++i) {
+    int expected = -1;
+    // A slot is taken by storing -2, filled, then given its directory.
+    if (pending[i].dir.compare_exchange_strong(expected, -2, std::memory_order_acq_rel)) {
+      std::memcpy(pending[i].name, name.c_str(), name.size() + 1);
+      pending[i].dir.store(dir, std::memory_order_release);
+      return i;
+    }
+  }
+  return -1;  // more pending files than slots: the extra ones are not removed on a signal
+}
+
+void withdraw(int slot) {
+  if (slot >= 0) pending[slot].dir.store(-1, std::memory_order_release);
+}
+
 const char* kind_of(mode_t mode) {
   if (S_ISDIR(mode)) return "a directory";
   if (S_ISBLK(mode)) return "a block device";
@@ -41,25 +91,39 @@ const char* kind_of(mode_t mode) {
 }  // namespace
 
 int write_all(int fd, std::string_view text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
+  sigset_t pipe, before;
+  sigemptyset(&pipe);
+  sigaddset(&pipe, SIGPIPE);
+  ::pthread_sigmask(SIG_BLOCK, &pipe, &before);
+  int error = 0;
+  for (std::size_t done = 0; done < text.size() && !error;) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) return errno;
-    if (n == 0) return ENOSPC;
-    done += static_cast<std::size_t>(n);
+    if (n < 0) error = errno;
+    else if (n == 0) error = ENOSPC;
+    else done += static_cast<std::size_t>(n);
   }
-  return 0;
+  if (error == EPIPE && !sigismember(&before, SIGPIPE)) {  // the SIGPIPE this write raised, taken back
+    const timespec now{0, 0};
+    while (::sigtimedwait(&pipe, nullptr, &now) < 0 && errno == EINTR) {
+    }
+  }
+  ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
+  return error;
 }
 
 Replacement::Replacement(int dir_fd, std::string name, std::string shown, int mode_of_old)
     : dir_fd_(dir_fd), name_(std::move(name)), shown_(std::move(shown)) {
-  // The kernel applies the umask to a new file's 0666; an old file's permissions are kept.
+  // The kernel applies the umask to a new file's 0666; an old file's permissions are kept, and the
+  // temporary never allows more than they do.
+  handle_signals_once();
+  const mode_t mode = mode_of_old >= 0 ? static_cast<mode_t>(mode_of_old) & 0777 : 0666;
   for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
     temp_ = temporary_name(name_, attempt);
-    fd_ = ::openat(dir_fd_, temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY, 0666);
+    fd_ = ::openat(dir_fd_, temp_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY, mode);
     if (fd_ < 0 && errno != EEXIST) break;
   }
+  if (fd_ >= 0) slot_ = publish(dir_fd_, temp_);
   if (fd_ < 0) {
     const int err = errno;
     throw UserError(fmt::format("{}: cannot write the file: no temporary file can be made beside it ({})", shown_, std::strerror(err)));
@@ -76,6 +140,7 @@ Replacement::Replacement(int dir_fd, std::string name, std::string shown, int mo
 Replacement::~Replacement() {
   if (fd_ >= 0) ::close(fd_);
   if (!temp_.empty()) ::unlinkat(dir_fd_, temp_.c_str(), 0);
+  withdraw(slot_);
 }
 
 void Replacement::fail(const char* doing, int error) {
@@ -83,7 +148,9 @@ void Replacement::fail(const char* doing, int error) {
   fd_ = -1;
   ::unlinkat(dir_fd_, temp_.c_str(), 0);
   temp_.clear();
-  throw UserError(fmt::format("{}: {} ({}); nothing was replaced", shown_, doing, std::strerror(error)));
+  withdraw(slot_);
+  slot_ = -1;
+  throw OutputLost(fmt::format("{}: {} ({}); nothing was replaced", shown_, doing, std::strerror(error)));
 }
 
 void Replacement::commit() {
@@ -93,6 +160,8 @@ void Replacement::commit() {
   if (::close(fd) != 0) fail("cannot write the file", errno);
   if (::renameat(dir_fd_, temp_.c_str(), dir_fd_, name_.c_str()) != 0) fail("cannot replace the file", errno);
   temp_.clear();
+  withdraw(slot_);
+  slot_ = -1;
   ::fsync(dir_fd_);  // the rename itself on the disk; a file system that cannot says nothing worse
 }
 
@@ -101,9 +170,11 @@ OutputFile::OutputFile(const std::string& path) : path_(path) {
   struct stat st {};
   std::string target = path;
   int old_mode = -1;
+  uid_t replaced_owner = ::geteuid();
   if (::stat(path.c_str(), &st) == 0) {
     if (S_ISREG(st.st_mode)) {
       old_mode = static_cast<int>(st.st_mode);
+      replaced_owner = st.st_uid;
       // A link is followed: the file it names is the one replaced, the link kept.
       struct stat lst {};
       if (::lstat(path.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) {
@@ -143,6 +214,14 @@ OutputFile::OutputFile(const std::string& path) : path_(path) {
   const std::string dir = p.has_parent_path() ? p.parent_path().string() : ".";
   dir_fd_ = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (dir_fd_ < 0) throw UserError(fmt::format("{}: cannot write the file: its directory cannot be opened ({})", path, std::strerror(errno)));
+  // In a sticky directory (/tmp) another user's file cannot be renamed over: said now, not after the run.
+  struct stat dst {};
+  if (replaced_owner != ::geteuid() && ::geteuid() != 0 && ::fstat(dir_fd_, &dst) == 0 && (dst.st_mode & S_ISVTX) &&
+      dst.st_uid != ::geteuid()) {
+    ::close(dir_fd_);
+    dir_fd_ = -1;
+    throw UserError(fmt::format("{}: cannot write the file (another user's file in a sticky directory cannot be replaced)", path));
+  }
   try {
     replacement_ = std::make_unique<Replacement>(dir_fd_, name, path, old_mode);
   } catch (...) {
@@ -163,9 +242,9 @@ void OutputFile::write(std::string_view text) {
   if (const int err = write_all(fd(), text); err != 0) {
     if (replacement_) {
       replacement_.reset();
-      throw UserError(fmt::format("{}: cannot write the file ({}); nothing was replaced", path_, std::strerror(err)));
+      throw OutputLost(fmt::format("{}: cannot write the file ({}); nothing was replaced", path_, std::strerror(err)));
     }
-    throw UserError(fmt::format("{}: cannot write the file ({})", path_, std::strerror(err)));
+    throw OutputLost(fmt::format("{}: cannot write the file ({})", path_, std::strerror(err)));
   }
 }
 
@@ -176,7 +255,7 @@ void OutputFile::commit() {
   }
   const int fd = stream_fd_;
   stream_fd_ = -1;
-  if (::close(fd) != 0) throw UserError(fmt::format("{}: cannot write the file ({})", path_, std::strerror(errno)));
+  if (::close(fd) != 0) throw OutputLost(fmt::format("{}: cannot write the file ({})", path_, std::strerror(errno)));
 }
 
 }  // namespace impact3d::cli

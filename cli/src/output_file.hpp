@@ -9,10 +9,19 @@
 #include <string>
 #include <string_view>
 
+#include "user_error.hpp"
+
 namespace impact3d::cli {
 
+// An output that was opened but could not be written whole (a full disk, a reader gone away): exit
+// status 3, as batch's, where a name that cannot be written at all is bad input (UserError, 1).
+struct OutputLost : UserError {
+  using UserError::UserError;
+};
+
 // A file being written in place of `name` in the directory `dir_fd`: the temporary is removed unless
-// commit() renamed it over the name.
+// commit() renamed it over the name, also when SIGINT, SIGTERM or SIGHUP ends the program (where their
+// handling is the default one when the first temporary is made; batch's own handler commits instead).
 class Replacement {
  public:
   // Throws UserError naming `shown` (the target as the user would name it).
@@ -29,6 +38,7 @@ class Replacement {
  private:
   [[noreturn]] void fail(const char* doing, int error);
   int dir_fd_;
+  int slot_ = -1;  // in the table the signal handler removes temporaries from
   std::string name_, temp_, shown_;
   int fd_ = -1;
 };
@@ -57,7 +67,8 @@ class OutputFile {
 };
 
 // Writes all of `text` to `fd`; returns 0 or the errno of the failure (ENOSPC for a write that took
-// nothing).
+// nothing, EPIPE for a reader gone away: SIGPIPE is held off while it writes, so that a FIFO whose
+// reader quits is an error line, not a silent death).
 int write_all(int fd, std::string_view text);
 
 }  // namespace impact3d::cli

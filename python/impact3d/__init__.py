@@ -18,6 +18,7 @@ ft lbf) unless `units` asks for others; angles are in degrees. Bad input raises 
 ValueError) whose message is the command line's one-line message: the file, the JSON path, the problem.
 """
 import os
+import warnings
 from numbers import Integral
 
 from . import _convert
@@ -162,6 +163,10 @@ def montecarlo(case, uncertainty, strategies=None, precision="double", engine="g
     text, sampled = _impact3d.montecarlo(c, _uncertainty(uncertainty), _strategies(strategies), precision, engine,
                                          jobs, samples, seed, keep_samples)
     doc = _convert.summary(text)
+    for k, r in enumerate(doc["results"]):  # as the command line warns
+        if 2 * r["solved"] < doc["samples"]:
+            warnings.warn(f"montecarlo: results[{k}] solved {r['solved']} of {doc['samples']} samples: its summary "
+                          "describes only those", stacklevel=2)
     if sampled is not None:
         doc["sampled"] = sampled
     return doc

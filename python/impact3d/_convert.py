@@ -53,6 +53,14 @@ class InputError(ValueError):
 MAX_DEPTH = 32
 
 
+def _member(path, key):
+    """`path.key`, or `path["key"]` with the key escaped (as the reader's messages write it) where it
+    is not an identifier: a key holding a newline stays on one line."""
+    if key.isascii() and key.isidentifier():
+        return f"{path}.{key}"
+    return f"{path}[{json.dumps(key)}]"
+
+
 def case_json(value, path="$", depth=0):
     """`value` (dicts, lists, tuples, strings, booleans, None, ints, floats, Decimals, NumPy scalars) as
     JSON text; a Decimal keeps every digit. Raises InputError naming the path of what has no JSON form,
@@ -64,7 +72,7 @@ def case_json(value, path="$", depth=0):
         for k, v in value.items():
             if not isinstance(k, str):
                 raise InputError(f"{path}: a key that is not a string: {k!r}")
-            items.append(json.dumps(k) + ": " + case_json(v, f"{path}.{k}", depth + 1))
+            items.append(json.dumps(k) + ": " + case_json(v, _member(path, k), depth + 1))
         return "{" + ", ".join(items) + "}"
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(case_json(v, f"{path}[{i}]", depth + 1) for i, v in enumerate(value)) + "]"

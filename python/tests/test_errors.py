@@ -90,3 +90,9 @@ def test_a_dict_nested_past_the_readers_limit_is_a_case_error_naming_it():
         impact3d.read_case(shallow)
     assert "nested deeper" not in str(raised.value)
 
+
+def test_a_key_that_is_no_identifier_is_escaped_in_the_path():
+    with pytest.raises(impact3d.CaseError) as raised:
+        impact3d.read_case({"name": "x", "a\nb": {"c": float("nan")}})
+    assert str(raised.value) == '$["a\\nb"].c: not a finite number: nan'
+

@@ -80,3 +80,10 @@ def test_a_run_that_solved_no_sample_raises(fig8):
     with pytest.raises(impact3d.CaseError, match=r"^\$: pc-crash mu=1\.0 solved none of the 20 samples: 20 of them do not approach"):
         impact3d.montecarlo(fig8, away)
 
+
+def test_a_run_that_solved_fewer_than_half_warns(fig8):
+    few = {"samples": 200, "inputs": [{"path": "$.vehicles[1].velocity[1]", "distribution": "uniform", "min": -10, "max": 4}]}
+    with pytest.warns(UserWarning, match=r"^montecarlo: results\[0\] solved \d+ of 200 samples"):
+        doc = impact3d.montecarlo(fig8, few)
+    assert doc["results"][0]["solved"] < 100
+

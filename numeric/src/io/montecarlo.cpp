@@ -380,11 +380,13 @@ void merge(std::vector<Tally>& into, const std::vector<Tally>& from) {
 }  // namespace
 
 std::uint64_t run_bytes_per_sample(std::size_t results, std::size_t inputs, bool keep_samples) {
-  // The store of every output, the samples' inputs, regimes and reasons when kept, and the two columns
-  // of doubles a summary sorts and selects in.
+  // The store of every output, the samples' inputs, regimes and reasons when kept, and on each of the
+  // summaries' threads at most 48 bytes a sample: the output's column (8), and the order statistics'
+  // bin of each value (2) and values gathered (8) at each of their three levels at worst, and the last
+  // level's copy (8) (statistics.cpp).
   const std::uint64_t store = 8 * results * monte_carlo_outputs().size();
   const std::uint64_t kept = keep_samples ? 8 * inputs + 3 * results : 0;
-  return store + kept + 16;
+  return store + kept + 48 * kSummaryThreads;
 }
 
 MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u, const MonteCarloOptions& o) {
@@ -528,6 +530,7 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   std::atomic<std::size_t> next_summary{0};
   auto summarize_some = [&] {
     std::vector<double> column;
+    column.reserve(n);  // once: grown by push_back, it could take twice the samples
     for (std::size_t t; (t = next_summary++) < todo.size();) {
       const auto [k, summary] = todo[t];
       const OutputPath& out = *summary->output;
@@ -549,7 +552,7 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   };
   {
     std::vector<std::jthread> threads;
-    for (unsigned j = 1; j < jobs; ++j)
+    for (unsigned j = 1; j < std::min(jobs, kSummaryThreads); ++j)
       threads.emplace_back([&] {
         const ThreadCaches freed_at_exit;
         summarize();

@@ -109,6 +109,9 @@ struct MonteCarloRun {
 // The memory a run may take: every output of every sample is kept for the percentiles (README,
 // "Limits"). A run is sized before its first sample by run_bytes_per_sample.
 inline constexpr std::uint64_t kMaxRunBytes = std::uint64_t{2} << 30;
+// The threads that summarize the outputs, at most (each holds two columns of the samples' values),
+// so that the memory a run takes does not grow with --jobs.
+inline constexpr unsigned kSummaryThreads = 4;
 std::uint64_t run_bytes_per_sample(std::size_t results, std::size_t inputs, bool keep_samples);
 
 // Throws CaseError: for the uncertainty file's problems at its JSON path ("$.inputs[2].path: ...",

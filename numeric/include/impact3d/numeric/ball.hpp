@@ -121,6 +121,7 @@ class Ball {
   bool exact() const { return arb_is_exact(x_); }
   bool finite() const { return arb_is_finite(x_); }
   bool contains_zero() const { return arb_contains_zero(x_); }
+  bool exactly_zero() const { return arb_is_zero(x_); }
   // The radius, rounded up; the midpoint; the bounds, each as a ball holding one exact number.
   Ball radius() const;
   Ball midpoint() const;

@@ -30,13 +30,20 @@ inline constexpr char heading_after[] = "heading after: horizontal speed > 0";
 // A comparison of balls the mechanics do not name (it has no alternative computed: nothing flips it).
 inline constexpr char unnamed[] = "a comparison the mechanics do not name";
 inline constexpr char cil_direction[] = "critical impulse line: the sign of its direction's P_n component";
+// Questions about the post-impact relative velocity that the balls left open and the strategy's
+// constraint rows answer (constraint_rows.hpp): each answer and the equation that imposes it.
+inline constexpr char constraint_rows[] = "post-impact relative velocity: the strategy's constraint rows";
 }  // namespace decision_names
 
-enum class DecisionStatus { decided, undecided, tie };
+// decided: the balls exclude the other branch; by_construction: the balls could not tell, and the
+// strategy's own constraint rows decide it exactly (a zero that is the strategy's constraint, not a
+// numerical accident); tie: exactly on the threshold, by the exact solve; undecided: open.
+enum class DecisionStatus { decided, by_construction, undecided, tie };
 
 inline const char* decision_status_name(DecisionStatus s) {
   switch (s) {
     case DecisionStatus::decided: return "decided";
+    case DecisionStatus::by_construction: return "by construction";
     case DecisionStatus::undecided: return "undecided";
     case DecisionStatus::tie: return "tie";
   }
@@ -62,6 +69,15 @@ struct DecisionLog {
         return;
       }
     decisions.push_back({name, status, std::move(detail)});
+  }
+  // An answer of the constraint rows, added to the one entry of that name.
+  void by_construction(const std::string& answer) {
+    for (auto& d : decisions)
+      if (d.name == decision_names::constraint_rows) {
+        if (d.detail.find(answer) == std::string::npos) d.detail += "; " + answer;
+        return;
+      }
+    decisions.push_back({decision_names::constraint_rows, DecisionStatus::by_construction, answer});
   }
   bool undecided() const {
     for (const auto& d : decisions)

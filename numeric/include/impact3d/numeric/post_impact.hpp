@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "impact3d/numeric/constraint_rows.hpp"
 #include "impact3d/numeric/decisions.hpp"
 #include "impact3d/numeric/kinematics.hpp"
 #include "impact3d/numeric/planar_norm.hpp"
@@ -80,12 +81,21 @@ inline const char* axis_change_name(AxisChange c) {
   return "?";
 }
 
-template <typename Scalar>
-AxisChange axis_change(const Scalar& before, const Scalar& after, const Scalar& tol) {
-  const bool was = rounding::beyond_rounding(before, tol), is = rounding::beyond_rounding(after, tol);
+// `rows(was_zero)`: what the constraint rows say of `after` (constraint_rows.hpp).
+template <typename Scalar, typename Rows>
+AxisChange axis_change(const Scalar& before, const Scalar& after, const Scalar& tol, Rows&& rows) {
+  const bool was = rounding::beyond_rounding(before, tol);
+  const ZeroAnswer a = zero_or_by_rows(after, tol, [&] { return rows(!was); });
+  const bool is = !a.zero;
   if (!was) return is ? AxisChange::started : AxisChange::none;
   if (!is) return AxisChange::stopped;
+  if (a.by_rows) return AxisChange::reversed;  // only a Full Impact's -eps V_ri, eps > 0, is not zero by its rows
   return (before > Scalar(0)) == (after > Scalar(0)) ? AxisChange::continued : AxisChange::reversed;
+}
+
+template <typename Scalar>
+AxisChange axis_change(const Scalar& before, const Scalar& after, const Scalar& tol) {
+  return axis_change(before, after, tol, [](bool) { return RowsAnswer{}; });
 }
 
 template <typename Scalar>
@@ -140,6 +150,7 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
   out.velocity_roundoff = tol;
 
   out.restitution_effective = -out.V_rf.x() / out.V_ri.x();
+  const std::optional<bool> eps_zero = restitution_zero(s.restitution);
   if constexpr (!is_exact_v<Scalar>) {  // sliding speeds and the swerve are not rational
     out.sliding_before = planar_norm(out.V_ri.y(), out.V_ri.z());
     out.sliding_after = planar_norm(out.V_rf.y(), out.V_rf.z());
@@ -149,31 +160,37 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
       const Scalar dot = out.V_ri.y() * out.V_rf.y() + out.V_ri.z() * out.V_rf.z();
       out.swerve_speed = cross / out.sliding_before;
       out.sliding_along = dot / out.sliding_before;
-      if (rounding::beyond_rounding(out.sliding_after, tol)) {
+      if (!zero_or_by_rows(out.sliding_after, tol, [&] { return sliding_after(imp.rows, eps_zero); }).zero) {
         // A component within rounding of zero is zero (the report's rule): the final sliding is then on
         // the line, or square to it, exactly; and the angle keeps no kink of |along| at along = 0.
-        const bool along_zero = rounding::within_rounding(*out.sliding_along, tol);
-        if (rounding::within_rounding(*out.swerve_speed, tol)) out.swerve_deg = Scalar(0);
-        else if (along_zero) out.swerve_deg = Scalar(cross > Scalar(0) ? 90 : -90);
+        const ZeroAnswer along = zero_or_by_rows(*out.sliding_along, tol, [&] { return swerve_along(imp.rows, eps_zero); });
+        if (zero_or_by_rows(*out.swerve_speed, tol, [&] { return swerve_across(imp.rows); }).zero) out.swerve_deg = Scalar(0);
+        else if (along.zero) out.swerve_deg = Scalar(cross > Scalar(0) ? 90 : -90);
         else out.swerve_deg = degrees(Scalar(atan2(cross, abs(dot))));
-        out.reversed = !along_zero && *out.sliding_along < Scalar(0);
+        // Not zero by the rows is a Full Impact's -eps |sliding before|, eps > 0: pointing back.
+        out.reversed = !along.zero && (along.by_rows || *out.sliding_along < Scalar(0));
       }
     }
   }
   {
     const DecisionName<Scalar> name(decision_names::volume);
-    out.t_change = axis_change(out.V_ri.y(), out.V_rf.y(), tol);
+    out.t_change = axis_change(out.V_ri.y(), out.V_rf.y(), tol, [&](bool was_zero) {
+      return axis_after(imp.rows, 1, was_zero, eps_zero, exactly_zero(out.V_ri.z()));
+    });
   }
   {
     const DecisionName<Scalar> name(decision_names::z_sliding);
-    out.z_change = axis_change(out.V_ri.z(), out.V_rf.z(), tol);
+    out.z_change = axis_change(out.V_ri.z(), out.V_rf.z(), tol, [&](bool was_zero) {
+      return axis_after(imp.rows, 2, was_zero, eps_zero, exactly_zero(out.V_ri.y()));
+    });
   }
   bool separating, penetrating;
   {
     const DecisionName<Scalar> name(decision_names::volume);
-    const bool zero = rounding::within_rounding(out.V_rf.x(), tol);
-    separating = !zero && out.V_rf.x() < Scalar(0);
-    penetrating = !zero && out.V_rf.x() > Scalar(0);
+    const ZeroAnswer n = zero_or_by_rows(out.V_rf.x(), tol, [&] { return normal_after(eps_zero); });
+    // Not zero by the rows is -eps V_rn before, eps > 0: separating.
+    separating = !n.zero && (n.by_rows || out.V_rf.x() < Scalar(0));
+    penetrating = !n.zero && !n.by_rows && out.V_rf.x() > Scalar(0);
   }
   if (!separating && !penetrating)
     out.volume = "max-compression plane";

@@ -80,9 +80,21 @@ struct SolveError : std::runtime_error {
 };
 
 // What an engine determines: the impulse and the ratios and limits that decided it.
+// What the rows a strategy solved for impose on the post-impact relative velocity V_rf (contact axes n,
+// t, z), exactly, whatever the rounding: for every strategy V_rnf = -eps V_rni (the restitution row);
+// `full`: V_rf = -eps V_ri along t and z too (the Full Impact, eqs 10-12); `t_zero`, `z_zero`: V_rf = 0
+// along that axis (Brach's critical ratio, eqs 25-27; Wach capped at its CIR on the fallback t axis,
+// eq 19); `along_plane_zero`: V_rf . u = 0 along the solution plane's axis u, the initial sliding's
+// direction (Wach capped at its CIR, eqs 19, 21). constraint_rows.hpp answers from them.
+struct ConstraintRows {
+  bool full = false, t_zero = false, z_zero = false, along_plane_zero = false;
+  const char* zero_rows = "";  // the rows behind t_zero, z_zero and along_plane_zero, as a result names them
+};
+
 template <typename Scalar>
 struct ImpulseSolution {
   Vec3<Scalar> P_C;  // impulse on vehicle 1, contact axes (n, t, z)
+  ConstraintRows rows;  // what the constraints solved for impose on V_rf, exactly
   Regime regime = Regime::as_given;
   std::optional<Scalar> mu, mu_t, mu_z;                           // ratios actually used
   std::optional<Scalar> gir, cir, mu_t_critical, mu_z_critical;  // limits compared against

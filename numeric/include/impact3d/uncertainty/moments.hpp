@@ -17,10 +17,11 @@ struct Moments {
 Moments moments(const Distribution& d);
 
 // Why a truncated normal's samples would not resolve its law to double precision, or empty: its sd is
-// below 2^-32 of the values it takes (their magnitude, and their distance from the normal's mean),
-// so that fewer than 2^20 doubles would lie across one sd. Beyond the magnitudes, the sampler keeps
-// its digits any number of sd out (distribution.hpp); this bounds a window's distance out to about
-// 2^16 sd, and its width to about 2^-30 of its values.
+// below 2^-32 of the values it takes (their magnitude, their distance from the normal's mean) or of
+// the normal's sd (the standardized draw resolves about eps of one sd near the mean), so that fewer
+// than 2^20 resolvable values would lie across one sd. Beyond that, the sampler keeps its digits any
+// number of sd out (distribution.hpp); this bounds a window's distance out to about 2^16 sd, and its
+// width to about 2^-30 of its values and of the normal's sd.
 std::string truncated_sampling_problem(const Distribution& d);
 
 }  // namespace impact3d::uncertainty

@@ -12,6 +12,9 @@ namespace impact3d::strategies {
 template <typename Engine, typename Scalar>
 Singular brach(const Problem<Scalar>& p, const Brach<Scalar>& spec, ImpulseSolution<Scalar>& out) {
   out.regime = Regime::as_given;
+  out.rows.t_zero = !spec.mu_t;  // critical: the no-sliding row along t (eqs 25, 27)
+  out.rows.z_zero = !spec.mu_z;
+  out.rows.zero_rows = "Brach's critical ratio, the no-sliding row (eqs 25-27)";
   const auto P = Engine::try_brach_impulse(p, spec.mu_t, spec.mu_z);
   if (!P) return {"brach (eqs 24-27)"};
   out.P_C = *P;

@@ -34,6 +34,7 @@ Singular pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec, Impulse
   }
   if (full) {
     out.regime = Regime::full;
+    out.rows.full = true;
     out.mu = gir;
     out.P_C = *P_fi;
   } else {

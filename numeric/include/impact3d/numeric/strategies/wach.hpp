@@ -50,6 +50,11 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
     capped = imposed_or(decision, spec.mu >= limit);
   }
   out.regime = capped ? Regime::capped : Regime::sliding;
+  if (capped && on_cir) {  // the CIR's rows: no sliding along the plane's axis (eq 19)
+    out.rows.zero_rows = "Wach capped at its CIR, no sliding along its plane's axis (eqs 19, 21)";
+    if (has_warning(out.codes, WarningCode::plane_undefined)) out.rows.t_zero = true;  // the axis is +-t
+    else out.rows.along_plane_zero = true;
+  }
   out.mu = capped ? limit : spec.mu;
   flag_if_negative_ratio(out, *out.mu, "impulse ratio");
   const auto P = Engine::try_plane_impulse(p, ax, *out.mu);
