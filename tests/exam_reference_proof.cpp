@@ -120,21 +120,20 @@ void set_nth(std::string& text, const std::string& key, const std::string& old, 
 
 }  // namespace
 
-// The planar rear-end case's result 2 (Wach capped at its CIR) leaves "sliding and swerve" undecided at
-// every bits: its final sliding along t is zero by its constraint row, but along z by the case's planar
-// symmetry, which no row imposes and the rotations do not make rational. Its alternative is that
-// decision's other branch: a final sliding, not reversed, with no swerve. Both of its fields on that
-// branch prove the result on the alternative; one of them alone mixes the branches.
+// The near-zero sliding case's result 0 (a Full Impact) leaves the PDOF's quadrant undecided at every
+// bits: each vehicle's Delta-V lies along its x axis to within the balls, so its angle is 0 or 360.
+// The alternative is that decision's other branch, both vehicles at 360; one of them alone mixes the
+// branches.
 TEST_CASE("a result is proven on one branch throughout: an alternative's, or none when branches mix", "[certified]") {
-  const Fixture f(IMPACT3D_CASES_DIR "/planar_rear_end.json");
+  const Fixture f(IMPACT3D_CASES_DIR "/hard_sliding_near_zero.json");
   const auto other = f.prove([](std::string& text) {
-    set_nth(text, "reversed", "null", 0, "false");
-    set_nth(text, "swerve_angle_deg", "null", 0, "0");
+    set_nth(text, "pdof_deg", "0,", 0, "360,");
+    set_nth(text, "pdof_deg", "0,", 0, "360,");
   });
   INFO(other.failure);
   REQUIRE(other.failure.empty());
   CHECK(other.document.find("for 1 of the results the other branch of one decision") != std::string::npos);
-  const auto mixed = f.prove([](std::string& text) { set_nth(text, "reversed", "null", 0, "false"); });
+  const auto mixed = f.prove([](std::string& text) { set_nth(text, "pdof_deg", "0,", 0, "360,"); });
   CHECK(mixed.document.empty());
-  CHECK(mixed.failure.rfind("results[2].", 0) == 0);
+  CHECK(mixed.failure.rfind("results[0].", 0) == 0);
 }

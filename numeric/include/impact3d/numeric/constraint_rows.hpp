@@ -79,30 +79,51 @@ inline RowsAnswer axis_after(const ConstraintRows& r, int axis, bool was_zero, s
                       (axis == 1 ? "t" : "z") + " alone)"};
   if (r.full) {
     const std::string why = std::string(name) + " after = -eps " + name + " before (the Full Impact's rows, eqs 10-12)";
-    if (was_zero) return {true, why + ", " + name + " before zero"};
+    if (was_zero) return {true, why + ", given " + name + " before zero"};
     return {eps_zero, why};
   }
   return {};
 }
 
+// Which contact-plane components are zero before and after, exactly: by a row, or by a ball of
+// radius 0 (a planar case's vertical components), for the sliding and swerve questions below.
+struct PlaneZeros {
+  bool ri_t, ri_z, rf_t, rf_z;
+};
+
+template <typename Scalar>
+PlaneZeros plane_zeros(const ConstraintRows& r, const Vec3<Scalar>& V_ri, const Vec3<Scalar>& V_rf) {
+  const bool ri_t = exactly_zero(V_ri.y()), ri_z = exactly_zero(V_ri.z());
+  return {ri_t, ri_z, r.t_zero || exactly_zero(V_rf.y()) || (r.along_plane_zero && ri_z),
+          r.z_zero || exactly_zero(V_rf.z()) || (r.along_plane_zero && ri_t)};
+}
+
 // The final sliding |(V_rt, V_rz)| after, where the initial sliding is not zero.
-inline RowsAnswer sliding_after(const ConstraintRows& r, std::optional<bool> eps_zero) {
-  if (r.t_zero && r.z_zero) return {true, std::string("sliding after = 0 (") + r.zero_rows + ", along t and z)"};
+inline RowsAnswer sliding_after(const ConstraintRows& r, const PlaneZeros& z, std::optional<bool> eps_zero) {
+  if (z.rf_t && z.rf_z)
+    return {true, std::string("sliding after = 0 (") + (r.t_zero || r.z_zero || r.along_plane_zero ? r.zero_rows : "") +
+                      ", each of V_rt and V_rz after zero by its row or exactly)"};
   if (r.full) return {eps_zero, "sliding after = -eps times the sliding before (the Full Impact's rows, eqs 10-12)"};
   return {};
 }
 
-// The final sliding across the initial one's line (the swerve), where both are not zero.
-inline RowsAnswer swerve_across(const ConstraintRows& r) {
+// The final sliding across the initial one's line (the swerve, V_rt V_rz' - V_rz V_rt'), where both
+// are not zero.
+inline RowsAnswer swerve_across(const ConstraintRows& r, const PlaneZeros& z) {
   if (r.full) return {true, "no swerve: the sliding after is -eps times the sliding before (the Full Impact's rows, eqs 10-12)"};
+  if ((z.ri_t || z.rf_z) && (z.ri_z || z.rf_t))
+    return {true, std::string("no swerve: each product of V_rt V_rz' - V_rz V_rt' has a zero factor (") + r.zero_rows + ")"};
   return {};
 }
 
-// The final sliding along the initial one's direction, where both are not zero.
-inline RowsAnswer swerve_along(const ConstraintRows& r, std::optional<bool> eps_zero) {
+// The final sliding along the initial one's direction (V_rt V_rt' + V_rz V_rz'), where both are not zero.
+inline RowsAnswer swerve_along(const ConstraintRows& r, const PlaneZeros& z, std::optional<bool> eps_zero) {
   if (r.along_plane_zero)
     return {true, std::string("no sliding along the initial sliding's direction after (") + r.zero_rows + ")"};
   if (r.full) return {eps_zero, "sliding along the initial direction after = -eps |sliding before| (the Full Impact's rows, eqs 10-12)"};
+  if ((z.ri_t || z.rf_t) && (z.ri_z || z.rf_z))
+    return {true, std::string("no sliding along the initial direction after: each product of V_rt V_rt' + V_rz V_rz' has a zero factor (") +
+                      r.zero_rows + ")"};
   return {};
 }
 

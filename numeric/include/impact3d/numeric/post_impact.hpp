@@ -160,11 +160,12 @@ Solution<Scalar> post_impact(const Scene<Scalar>& s, const ImpulseSolution<Scala
       const Scalar dot = out.V_ri.y() * out.V_rf.y() + out.V_ri.z() * out.V_rf.z();
       out.swerve_speed = cross / out.sliding_before;
       out.sliding_along = dot / out.sliding_before;
-      if (!zero_or_by_rows(out.sliding_after, tol, [&] { return sliding_after(imp.rows, eps_zero); }).zero) {
+      const auto zeros = [&] { return plane_zeros(imp.rows, out.V_ri, out.V_rf); };
+      if (!zero_or_by_rows(out.sliding_after, tol, [&] { return sliding_after(imp.rows, zeros(), eps_zero); }).zero) {
         // A component within rounding of zero is zero (the report's rule): the final sliding is then on
         // the line, or square to it, exactly; and the angle keeps no kink of |along| at along = 0.
-        const ZeroAnswer along = zero_or_by_rows(*out.sliding_along, tol, [&] { return swerve_along(imp.rows, eps_zero); });
-        if (zero_or_by_rows(*out.swerve_speed, tol, [&] { return swerve_across(imp.rows); }).zero) out.swerve_deg = Scalar(0);
+        const ZeroAnswer along = zero_or_by_rows(*out.sliding_along, tol, [&] { return swerve_along(imp.rows, zeros(), eps_zero); });
+        if (zero_or_by_rows(*out.swerve_speed, tol, [&] { return swerve_across(imp.rows, zeros()); }).zero) out.swerve_deg = Scalar(0);
         else if (along.zero) out.swerve_deg = Scalar(cross > Scalar(0) ? 90 : -90);
         else out.swerve_deg = degrees(Scalar(atan2(cross, abs(dot))));
         // Not zero by the rows is a Full Impact's -eps |sliding before|, eps > 0: pointing back.
