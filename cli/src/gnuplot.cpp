@@ -46,15 +46,6 @@ std::string summary_line(const std::string& text) {
   return io::printable(pick);
 }
 
-// Descriptors 0-2 may be closed when impact3d starts; those it hands to gnuplot are moved above them
-// so that redirecting gnuplot's standard streams never replaces one of them.
-int above_std(int fd) {
-  if (fd < 0 || fd > 2) return fd;
-  const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
-  ::close(fd);
-  return moved;
-}
-
 // gnuplot's absolute path from PATH, skipping empty and relative entries: those name the working
 // directory, which for gnuplot is the output directory, where anyone may have left a `gnuplot`.
 std::string gnuplot_path() {

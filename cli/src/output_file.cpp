@@ -90,6 +90,13 @@ const char* kind_of(mode_t mode) {
 
 }  // namespace
 
+int above_std(int fd) {
+  if (fd < 0 || fd > 2) return fd;
+  const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
+  ::close(fd);
+  return moved;
+}
+
 int write_all(int fd, std::string_view text) {
   sigset_t pipe, before;
   sigemptyset(&pipe);
@@ -128,12 +135,7 @@ Replacement::Replacement(int dir_fd, std::string name, std::string shown, int mo
     const int err = errno;
     throw UserError(fmt::format("{}: cannot write the file: no temporary file can be made beside it ({})", shown_, std::strerror(err)));
   }
-  if (fd_ <= 2) {  // never one of the standard streams, closed when the program started
-    const int moved = ::fcntl(fd_, F_DUPFD_CLOEXEC, 3);
-    ::close(fd_);
-    fd_ = moved;
-    if (fd_ < 0) fail("cannot write the file", errno);
-  }
+  if ((fd_ = above_std(fd_)) < 0) fail("cannot write the file", errno);
   if (mode_of_old >= 0 && ::fchmod(fd_, static_cast<mode_t>(mode_of_old) & 07777) != 0) fail("cannot write the file", errno);
 }
 
@@ -192,12 +194,8 @@ OutputFile::OutputFile(const std::string& path) : path_(path) {
         throw UserError(fmt::format("{}: cannot write the file ({})", path, std::strerror(err)));
       }
       ::fcntl(stream_fd_, F_SETFL, ::fcntl(stream_fd_, F_GETFL) & ~O_NONBLOCK);
-      if (stream_fd_ <= 2) {
-        const int moved = ::fcntl(stream_fd_, F_DUPFD_CLOEXEC, 3);
-        ::close(stream_fd_);
-        stream_fd_ = moved;
-        if (stream_fd_ < 0) throw UserError(fmt::format("{}: cannot write the file ({})", path, std::strerror(errno)));
-      }
+      if ((stream_fd_ = above_std(stream_fd_)) < 0)
+        throw UserError(fmt::format("{}: cannot write the file ({})", path, std::strerror(errno)));
       return;
     } else {
       throw UserError(fmt::format("{}: cannot write the file ({}: only a file, a FIFO or a character device is written)", path,

@@ -66,6 +66,11 @@ class OutputFile {
   std::unique_ptr<Replacement> replacement_;
 };
 
+// `fd`, or a copy above 2 (the original closed; -1 where none can be made): descriptors 0-2 may be closed
+// when impact3d starts, and a file opened then must never be taken for a standard stream, nor be
+// replaced by redirecting gnuplot's.
+int above_std(int fd);
+
 // Writes all of `text` to `fd`; returns 0 or the errno of the failure (ENOSPC for a write that took
 // nothing, EPIPE for a reader gone away: SIGPIPE is held off while it writes, so that a FIFO whose
 // reader quits is an error line, not a silent death).
