@@ -2,7 +2,7 @@
 """N generated pc-crash cases on stdout, for `impact3d batch` end to end (bench/batch.sh): the bundled
 Figure 8 case with its strategy replaced by pc-crash (mu 0.5) and the speeds, the impulse centre and the
 restitution varied by a seeded generator, so that both regimes occur. JSON Lines, or with --csv the same
-cases as CSV (a header of case paths, README "Cases as CSV")."""
+cases as CSV (a header of case paths, docs/batch.md, "Cases as CSV")."""
 import json
 import random
 import sys

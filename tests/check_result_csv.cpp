@@ -173,7 +173,7 @@ TEST_CASE("a NaN, an infinity and a negative zero are the document's null and -0
 }
 
 TEST_CASE("the result CSV's header is the one documented") {
-  // The header `batch --format csv` wrote before the rows were written from the analysis (README,
+  // The header `batch --format csv` wrote before the rows were written from the analysis (docs/batch.md,
   // "Results as CSV").
   std::string expected = "line,result,error,name,units,precision,engine,strategy,regime,impulse_ratio.mu,impulse_ratio.mu_t,"
                          "impulse_ratio.mu_z,limits.gir,limits.cir,limits.mu_t_critical,limits.mu_z_critical,plane_angle_deg";

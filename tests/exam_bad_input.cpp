@@ -3,7 +3,7 @@
 // converts the text itself). And the error policy of every subcommand (solve, plot, verify, compare).
 //
 // Where the expected answers come from:
-//  - the exit statuses and line shapes are the README's policy ("Exit status"): 1 and one line
+//  - the exit statuses and line shapes are the policy of docs/limits-and-exit-status.md ("Exit status"): 1 and one line
 //    `impact3d: error: FILE: $.path: problem` with nothing on stdout for bad input, 2 and one line
 //    `impact3d: usage: ...` for a command-line usage error;
 //  - each corpus file's line is in bad_input/expected.tsv, one per file and reviewed by hand (its header

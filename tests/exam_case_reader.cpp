@@ -2,7 +2,7 @@
 // command-line strategies. Each known value is either the literal text of the input (which the reader
 // keeps as written, for every precision to convert itself), a default or a shorthand of the case-format
 // contract (SI units, zero orientation and angular velocity, contact pitch and roll zero, the diagonal
-// inertia shorthand with zero products), or the JSON-path syntax the README documents for error lines.
+// inertia shorthand with zero products), or the JSON-path syntax docs/limits-and-exit-status.md documents for error lines.
 #include <catch2/catch.hpp>
 
 #include "impact3d/io/json_literals.hpp"
@@ -86,7 +86,7 @@ TEST_CASE("command-line strategies use the same rules", "[reader]") {
 }
 
 TEST_CASE("paths print keys that are not identifiers quoted and escaped", "[reader]") {
-  // The README's rule for error lines: keys that are not identifiers are quoted as in $["a/b"] (JSONPath's
+  // docs/limits-and-exit-status.md's rule for error lines: keys that are not identifiers are quoted as in $["a/b"] (JSONPath's
   // bracket notation), control characters printed as \n or \xNN (ESC = 0x1B), so every error stays one line.
   CHECK(io::member_path(io::element_path("$.vehicles", 0), "mass") == "$.vehicles[0].mass");
   CHECK(io::member_path("$", "vehicles/0/mass") == "$[\"vehicles/0/mass\"]");

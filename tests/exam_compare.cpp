@@ -3,10 +3,10 @@
 //
 // Where the expected answers come from: the reference results in verification/reference (32 cases, so
 // "N of 32 cases pass"), compared with themselves (a pass) or with copies altered here in one named field
-// (a failure naming that field); the rules are the README's (compare's pass rule, what --subset and a
-// CSV must hold, a comparison of nothing fails), the wording of the report lines (`FAIL case: field`,
-// `N of M cases pass`, `subset: ...`) is compare's own output, pinned here; the exit policy is the
-// README's ("Exit status": 1 with one `impact3d: error:` line and nothing on stdout for bad input, 1
+// (a failure naming that field); the rules are docs/verification-and-compare.md's (compare's pass rule,
+// what --subset and a CSV must hold, a comparison of nothing fails), the wording of the report lines
+// (`FAIL case: field`, `N of M cases pass`, `subset: ...`) is compare's own output, pinned here; the exit
+// policy is docs/limits-and-exit-status.md's ("Exit status": 1 with one `impact3d: error:` line and nothing on stdout for bad input, 1
 // with the report on stdout and nothing on stderr for a failed comparison).
 #include <catch2/catch.hpp>
 #include <algorithm>

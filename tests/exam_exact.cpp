@@ -97,7 +97,7 @@ TEST_CASE("the 100-digit solve agrees with the exact one to 95 digits", "[exact]
         using std::abs;
         // 100 digits (eps = 2^-333, 5.7e-101): inputs rounded once each from their decimal text and a solve
         // of condition kappa (at most 3.5 here) leave a few dozen eps kappa; 64 eps kappa is below the
-        // README's "agree to 95 digits" (1e-95) by three orders. Measured: at most 2 eps.
+        // docs/tests.md's "agree to 95 digits" (1e-95) by three orders. Measured: at most 2 eps.
         CHECK(abs(a.solutions[k].impulse.P_C(i) - exact) <= 64 * a.kappa * std::numeric_limits<F>::epsilon() * scale);
       }
     }

@@ -12,7 +12,7 @@
 //    difference of vehicle data, not of arithmetic, and cannot be stated in eps.
 //  - Exact by definition: 1 mph = 0.44704 m/s, so 25 mph = 11.176 m/s (the example's speeds).
 //  - By hand: a Full Impact leaves V_rf = -e V_ri (eqs 10-12 solve K P = m' (1 + e) V_ri), so with e = 0.1
-//    the t sliding after is -2.5 mph exactly; the README's table lists -2.50 mph.
+//    the t sliding after is -2.5 mph exactly; docs/solve-and-report.md's table lists -2.50 mph.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -49,7 +49,7 @@ TEST_CASE("Figure 8: mu = 0.4 is a Sliding Impact with continued t sliding and s
   const io::CaseSpec c = load_spec(example("fig8_side_impact.json"));
   const auto a = analyze(io::to_scene<double>(c), {PcCrash<double>{1.0}, PcCrash<double>{0.4}});
   const auto& slide = a.solutions[1];
-  CHECK(slide.impulse.regime == Regime::sliding);  // paper: mu = 0.4 < GIR (0.4787 here, README)
+  CHECK(slide.impulse.regime == Regime::sliding);  // paper: mu = 0.4 < GIR (0.4787 here, docs/solve-and-report.md)
   CHECK(slide.t_change == AxisChange::continued);
   CHECK(slide.z_change == AxisChange::started);
   // Paper: "small swerve components": a speed clearly above rounding (0.1 mph = 0.045 m/s).

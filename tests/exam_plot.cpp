@@ -2,7 +2,7 @@
 // example renders, the files are valid and non-empty, and the solution points drawn (read back from the
 // data the figures are drawn from) are the computed impulses.
 //
-// Where the expected answers come from: the figure list of the README ("Impulse-space diagrams": the
+// Where the expected answers come from: the figure list of docs/figures.md ("Impulse-space diagrams": the
 // contact plane, the impulse space, and per strategy a solution plane and two sweeps), the SVG and PNG
 // file signatures (`<?xml`, `\x89PNG\r\n\x1a\n`), and `impact3d solve --format json` of the same case for
 // the impulses; the hostile names are reproductions of reported attacks.

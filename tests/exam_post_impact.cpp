@@ -1,5 +1,5 @@
 // Post-impact reporting on named inputs: the principal direction of force of hand-chosen velocity
-// changes (the convention of post_impact.hpp and the README's result keys: degrees clockwise from
+// changes (the convention of post_impact.hpp and docs/case-format.md's result keys: degrees clockwise from
 // straight ahead seen from above, 0 = frontal, 90 = right side, and the nearest clock hour), the sliding
 // classification of hand-picked before/after pairs, and the warnings of the Figure 8 example under
 // strategies chosen by hand to pull and to feed energy in.

@@ -1,4 +1,4 @@
-// `impact3d batch --input-format csv` (README, "batch CSV"): a case per CSV row whose header names each
+// `impact3d batch --input-format csv` (docs/batch.md, "Cases as CSV"): a case per CSV row whose header names each
 // column by the JSON path of the case field it fills. The result CSV is io/result_csv.hpp's.
 #pragma once
 

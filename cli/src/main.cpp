@@ -58,7 +58,7 @@ int guarded(const std::string& file, F&& body) {
   } catch (const cli::UserError& e) {
     return error_line(e.what(), kBadInput);
   } catch (const std::bad_alloc&) {
-    return error_line(in_file("out of memory: the machine gave less than the run needed (README, \"Input limits\")"), kInternal);
+    return error_line(in_file("out of memory: the machine gave less than the run needed (docs/limits-and-exit-status.md)"), kInternal);
   } catch (const std::exception& e) {
     return error_line(in_file(e.what()), kInternal);
   }
@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
   impact3d::cli::MonteCarloCliOptions mopt;
   std::string mc_engine = "generated";
   mc_cmd->add_option("case", mopt.case_path, "case file (JSON)")->required();
-  mc_cmd->add_option("--uncertainty", mopt.uncertainty_path, "uncertainty file: the inputs' distributions (README, \"Monte Carlo\")")
+  mc_cmd->add_option("--uncertainty", mopt.uncertainty_path, "uncertainty file: the inputs' distributions (docs/montecarlo-and-sensitivity.md)")
       ->required();
   mc_cmd->add_option("--format", mopt.format, "text summary (default) or contract JSON")->check(CLI::IsMember({"text", "json"}));
   std::string mc_samples;
@@ -216,7 +216,7 @@ int main(int argc, char** argv) {
   impact3d::cli::ReconstructCliOptions recopt;
   std::string rec_engine = "generated";
   rec_cmd->add_option("case", recopt.case_path, "case file (JSON): every input but the unknowns, and one strategy")->required();
-  rec_cmd->add_option("--evidence", recopt.evidence_path, "evidence file: the unknowns and the evidence (README, \"Reconstruction\")")
+  rec_cmd->add_option("--evidence", recopt.evidence_path, "evidence file: the unknowns and the evidence (docs/reconstruction.md)")
       ->required();
   rec_cmd->add_option("--format", recopt.format, "text report (default) or contract JSON")->check(CLI::IsMember({"text", "json"}));
   rec_cmd->add_option("--strategy", recopt.strategy, "the strategy fitted, replacing the case's (as solve's --strategy)");

@@ -140,7 +140,7 @@ void against_input(Drawing& d, std::size_t k, std::size_t j, const std::string& 
 void check_plot_options(const MonteCarloPlotOptions& o) {
   for (const std::string* path : {&o.scatter_x, &o.scatter_y})
     if (output_index(*path) == io::monte_carlo_outputs().size())
-      throw io::CaseError("--scatter", fmt::format("{} is not an output (README, \"Monte Carlo\")", io::quoted(*path)));
+      throw io::CaseError("--scatter", fmt::format("{} is not an output (docs/montecarlo-and-sensitivity.md)", io::quoted(*path)));
   require_gnuplot();
 }
 

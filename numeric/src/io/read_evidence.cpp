@@ -65,7 +65,7 @@ std::vector<std::size_t> outputs_named(const std::string& name, const std::strin
       found.push_back(c);
   }
   if (found.empty())
-    fail(at, fmt::format("{} is not an output of a result (the Monte Carlo outputs: README, \"Monte Carlo\")", io::quoted(name)));
+    fail(at, fmt::format("{} is not an output of a result (the Monte Carlo outputs: docs/montecarlo-and-sensitivity.md)", io::quoted(name)));
   return found;
 }
 

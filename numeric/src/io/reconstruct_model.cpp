@@ -16,8 +16,7 @@
 #include "impact3d/io/montecarlo.hpp"
 #include "impact3d/io/result_numbers.hpp"
 #include "impact3d/io/to_scene.hpp"
-#include "impact3d/numeric/analysis.hpp"
-#include "impact3d/numeric/autodiff.hpp"
+#include "impact3d/numeric/dual_analysis.hpp"
 
 namespace impact3d::io::reconstruct_model {
 

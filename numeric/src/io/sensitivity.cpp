@@ -12,12 +12,7 @@
 #include "impact3d/io/result_numbers.hpp"
 #include "impact3d/io/scalar_text.hpp"
 #include "impact3d/io/to_scene.hpp"
-#include "impact3d/numeric/analysis.hpp"
-#include "impact3d/numeric/autodiff.hpp"
-
-namespace impact3d {
-template Analysis<Dual> analyze(const Scene<Dual>&, const std::vector<Strategy<Dual>>&, Engine);
-}  // namespace impact3d
+#include "impact3d/numeric/dual_analysis.hpp"
 
 namespace impact3d::io {
 

@@ -1,6 +1,6 @@
 // What any input may ask of impact3d: bounded size, depth and number text, so that no file, however
 // written, makes a reader hang or exhaust memory. Each limit is far above what a collision needs (a case
-// file is about 3 KB, six levels deep, with numbers of a few digits) and is stated in the README.
+// file is about 3 KB, six levels deep, with numbers of a few digits) and is stated in docs/limits-and-exit-status.md.
 #pragma once
 
 #include <cstddef>

@@ -106,8 +106,8 @@ struct MonteCarloRun {
   std::vector<std::string> reasons;
 };
 
-// The memory a run may take: every output of every sample is kept for the percentiles (README,
-// "Limits"). A run is sized before its first sample by run_bytes_per_sample.
+// The memory a run may take: every output of every sample is kept for the percentiles
+// (docs/limits-and-exit-status.md, "Input limits"). A run is sized before its first sample by run_bytes_per_sample.
 inline constexpr std::uint64_t kMaxRunBytes = std::uint64_t{2} << 30;
 // The threads that summarize the outputs, at most (each holds two columns of the samples' values),
 // so that the memory a run takes does not grow with --jobs.

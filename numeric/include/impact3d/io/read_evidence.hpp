@@ -41,7 +41,7 @@ struct EvidenceSpec {
   std::size_t components() const;
 };
 
-// Limits (README, "Limits"): a speed and a heading per vehicle and eight more inputs, so that the
+// Limits (docs/limits-and-exit-status.md): a speed and a heading per vehicle and eight more inputs, so that the
 // derivatives of a fit take one pass of the dual numbers (autodiff.hpp); evidence far beyond a
 // reconstruction's.
 inline constexpr std::size_t kMaxPathUnknowns = 8;

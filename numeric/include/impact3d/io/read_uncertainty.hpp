@@ -25,7 +25,7 @@ struct UncertaintySpec {
   std::vector<uncertainty::Correlation> correlations;  // a, b: places in `inputs`
 };
 
-// Limits (README, "Limits"): far above what a reconstruction needs, so that no file can ask for
+// Limits (docs/limits-and-exit-status.md): far above what a reconstruction needs, so that no file can ask for
 // unbounded work or memory.
 inline constexpr std::uint64_t kMaxSamples = 10'000'000;
 inline constexpr std::size_t kMaxUncertainInputs = 256;

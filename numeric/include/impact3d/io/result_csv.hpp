@@ -1,4 +1,4 @@
-// The result as CSV (README, "Results as CSV"): a fixed set of columns, one row per strategy of each
+// The result as CSV (docs/batch.md, "Results as CSV"): a fixed set of columns, one row per strategy of each
 // case, every cell the text the result document (result_json.hpp) has at the column's path. A floating
 // precision writes the rows straight from the analysis (result_csv_rows); exact results, whose document
 // render_exact writes, take their cells from the document as it is written (result_csv_pick,

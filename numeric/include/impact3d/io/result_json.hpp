@@ -1,5 +1,5 @@
 // The result document of the contract (shared spec case-format.md, "Result"), with the extra keys
-// documented in the README: impulse-space geometry, sliding and swerve, Delta-V magnitude and PDOF.
+// documented in docs/case-format.md: impulse-space geometry, sliding and swerve, Delta-V magnitude and PDOF.
 #pragma once
 
 #include <functional>
