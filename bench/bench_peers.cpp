@@ -12,10 +12,10 @@
 #include <random>
 #include <vector>
 
-#include "impact3d/numeric/analysis.hpp"
-#include "impact3d/numeric/batch/columns.hpp"
-#include "impact3d/numeric/limb_product.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/mechanics/analysis.hpp"
+#include "impact3d/mechanics/batch/columns.hpp"
+#include "impact3d/scalar/limb_product.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
 #include "peer_collisions.hpp"
 
 using namespace impact3d;

@@ -7,12 +7,12 @@
 #include <sstream>
 #include <vector>
 
-#include "impact3d/io/format_double.hpp"
-#include "impact3d/io/json_tree.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/numeric/certified.hpp"
-#include "impact3d/numeric/exact_analysis.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/case_format/format_double.hpp"
+#include "impact3d/case_format/json_tree.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/mechanics/certified.hpp"
+#include "impact3d/mechanics/exact_analysis.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
 
 using namespace impact3d;
 
@@ -28,23 +28,23 @@ const std::string& case_text() {
   return text;
 }
 
-const io::CaseSpec& spec() {
-  static const io::CaseSpec s = io::read_case(case_text());
+const case_format::CaseSpec& spec() {
+  static const case_format::CaseSpec s = case_format::read_case(case_text());
   return s;
 }
 
 void read_case(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(io::read_case(case_text()));
+  for (auto _ : state) benchmark::DoNotOptimize(case_format::read_case(case_text()));
 }
 
 template <typename T>
 void to_scene(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(io::to_scene<T>(spec()));
+  for (auto _ : state) benchmark::DoNotOptimize(case_format::to_scene<T>(spec()));
 }
 
 template <typename T, Engine E>
 void coefficient_matrix(benchmark::State& state) {
-  const Scene<T> s = io::to_scene<T>(spec());
+  const Scene<T> s = case_format::to_scene<T>(spec());
   for (auto _ : state) {
     if constexpr (E == Engine::generated) benchmark::DoNotOptimize(GeneratedEngine::coefficient_matrix(s));
     else benchmark::DoNotOptimize(direct::DirectEngine::coefficient_matrix(s));
@@ -54,8 +54,8 @@ void coefficient_matrix(benchmark::State& state) {
 // One case: K, the impulse space and the case's four strategies with their post-impact states.
 template <typename T, Engine E>
 void solve(benchmark::State& state) {
-  const Scene<T> s = io::to_scene<T>(spec());
-  const auto st = io::to_strategies<T>(spec());
+  const Scene<T> s = case_format::to_scene<T>(spec());
+  const auto st = case_format::to_strategies<T>(spec());
   for (auto _ : state) benchmark::DoNotOptimize(analyze(s, st, E));
   state.counters["cases/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
@@ -65,9 +65,9 @@ void solve_exact(benchmark::State& state) {
   std::ifstream in(IMPACT3D_BENCH_EXACT_CASE);
   std::ostringstream ss;
   ss << in.rdbuf();
-  const io::CaseSpec c = io::read_case(ss.str());
-  const Scene<rational> s = io::to_scene<rational>(c);
-  const auto st = io::to_strategies<rational>(c);
+  const case_format::CaseSpec c = case_format::read_case(ss.str());
+  const Scene<rational> s = case_format::to_scene<rational>(c);
+  const auto st = case_format::to_strategies<rational>(c);
   for (auto _ : state) benchmark::DoNotOptimize(exact_analyze(s, st));
   state.counters["cases/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
@@ -77,29 +77,29 @@ void solve_exact(benchmark::State& state) {
 // sliding is exactly -e times the initial, a zero no ball can prove). Compare with solve<float100>.
 void solve_certified(benchmark::State& state) {
   const BallBits bits(state.range(0));
-  const Scene<Ball> s = io::to_scene<Ball>(spec());
-  const auto st = io::to_strategies<Ball>(spec());
+  const Scene<Ball> s = case_format::to_scene<Ball>(spec());
+  const auto st = case_format::to_strategies<Ball>(spec());
   for (auto _ : state) benchmark::DoNotOptimize(certified_analyze(s, st));
   state.counters["cases/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 template <typename T>
 void result_json(benchmark::State& state) {
-  const auto a = analyze(io::to_scene<T>(spec()), io::to_strategies<T>(spec()));
-  for (auto _ : state) benchmark::DoNotOptimize(io::result_json(spec(), a, "p"));
+  const auto a = analyze(case_format::to_scene<T>(spec()), case_format::to_strategies<T>(spec()));
+  for (auto _ : state) benchmark::DoNotOptimize(case_format::result_json(spec(), a, "p"));
 }
 
 // The 17 digits of each number in Figure 8's result document (what a batch row prints), one number per
 // item, against std::to_chars at precision 17 (the same text).
 const std::vector<double>& printed_numbers() {
   static const std::vector<double> numbers = [] {
-    const std::string doc = io::result_json(spec(), analyze(io::to_scene<double>(spec()), io::to_strategies<double>(spec())), "p");
+    const std::string doc = case_format::result_json(spec(), analyze(case_format::to_scene<double>(spec()), case_format::to_strategies<double>(spec())), "p");
     std::vector<double> v;
-    auto collect = [&](const auto& self, const io::JsonValue& node) -> void {
-      if (node.is(io::JsonValue::Type::number)) v.push_back(node.number);
+    auto collect = [&](const auto& self, const case_format::JsonValue& node) -> void {
+      if (node.is(case_format::JsonValue::Type::number)) v.push_back(node.number);
       for (const auto& item : node.items) self(self, item);
     };
-    collect(collect, io::parse_json_tree(doc));
+    collect(collect, case_format::parse_json_tree(doc));
     return v;
   }();
   return numbers;
@@ -108,7 +108,7 @@ const std::vector<double>& printed_numbers() {
 void format_g17(benchmark::State& state) {
   char buf[32];
   for (auto _ : state)
-    for (const double x : printed_numbers()) benchmark::DoNotOptimize(io::format_g17(buf, x));
+    for (const double x : printed_numbers()) benchmark::DoNotOptimize(case_format::format_g17(buf, x));
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(printed_numbers().size()));
 }
 

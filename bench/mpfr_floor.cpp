@@ -21,9 +21,9 @@
 
 #include <arb.h>
 
-#include "impact3d/numeric/lean.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
-#include "impact3d/numeric/raw_collision.hpp"
+#include "impact3d/mechanics/lean.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
+#include "impact3d/mechanics/raw_collision.hpp"
 #include "peer_collisions.hpp"
 
 namespace {
@@ -209,7 +209,7 @@ double mpfr_get_d(mpfr_srcptr a, mpfr_rnd_t m) {
   const Call call(kGetD);
   return real_mpfr_get_d()(a, m);
 }
-// One for each sine-cosine pair (numeric/src/mpfr_sin_cos.cpp), which is what is timed.
+// One for each sine-cosine pair (numeric/scalar/src/mpfr_sin_cos.cpp), which is what is timed.
 void arb_sin_cos(arb_t s, arb_t c, const arb_t x, slong prec) {
   if (counting && depth == 0) {
     ++calls[kSinCos];

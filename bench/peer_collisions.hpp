@@ -6,9 +6,9 @@
 #include <random>
 #include <vector>
 
-#include "impact3d/numeric/kinematics.hpp"
-#include "impact3d/numeric/raw_collision.hpp"
-#include "impact3d/numeric/rotation.hpp"
+#include "impact3d/mechanics/kinematics.hpp"
+#include "impact3d/mechanics/raw_collision.hpp"
+#include "impact3d/mechanics/rotation.hpp"
 #include "naive/pc_crash.hpp"
 
 namespace impact3d::bench {

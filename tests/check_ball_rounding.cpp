@@ -1,4 +1,4 @@
-// round_ball (numeric/ball_rounding.hpp), which decides from an Arb ball's limbs whether all of it
+// round_ball (scalar/ball_rounding.hpp), which decides from an Arb ball's limbs whether all of it
 // rounds to one MPFR number, against the ball's ends computed exactly in MPFR at 4000 bits and rounded to
 // nearest: wherever round_ball decides, both ends round to the number it gives. The balls are drawn at
 // the edges its reasoning turns on: a midpoint at, beside and far from a tie, at the top and bottom of its
@@ -13,7 +13,7 @@
 
 #include <random>
 
-#include "impact3d/numeric/ball_rounding.hpp"
+#include "impact3d/scalar/ball_rounding.hpp"
 
 using impact3d::mp::round_ball;
 

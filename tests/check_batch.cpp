@@ -1,4 +1,4 @@
-// The SIMD batches (numeric/batch/columns.hpp) against the scalar lean path, row by row, on seeded random
+// The SIMD batches (mechanics/batch/columns.hpp) against the scalar lean path, row by row, on seeded random
 // raw collisions (bench/peer_collisions.hpp, both regimes) mixed with rows the lanes must not decide:
 // separating, mu exactly at the GIR, an undefined phi_FI plane, an overflowing mass, a NaN input.
 //
@@ -18,8 +18,8 @@
 #include <limits>
 #include <random>
 
-#include "impact3d/numeric/batch/columns.hpp"
-#include "impact3d/numeric/lean.hpp"
+#include "impact3d/mechanics/batch/columns.hpp"
+#include "impact3d/mechanics/lean.hpp"
 #include "peer_collisions.hpp"
 
 using namespace impact3d;

@@ -337,7 +337,7 @@ TEST_CASE("batch writes a file past 64 MiB, its end straight to the disk, byte f
   const fs::path dir = fs::current_path() / fmt::format("impact3d-batch-large-{}", ::getpid());
   fs::create_directories(dir);
   // Figure 8 with its four strategies (12 KB a row), a malformed row every 1000th: some 84 MB, past the
-  // 64 MiB a file takes through the page cache (cli/src/row_output.hpp). Standard output, here a file
+  // 64 MiB a file takes through the page cache (cli/library/include/impact3d/cli/row_output.hpp). Standard output, here a file
   // the program did not open, is written as it is given.
   constexpr int kRows = 7000;
   const std::string fig8 = json::parse(slurp(fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json")).dump();
@@ -542,7 +542,7 @@ TEST_CASE("batch answers a case piped in before the next arrives", "[batch]") {
 }
 
 // The CSV cells are written from the analysis at double and taken as the document is written at exact
-// (io/result_csv.hpp), never read back from it: a name with every character JSON escapes, each strategy
+// (case_format/result_csv.hpp), never read back from it: a name with every character JSON escapes, each strategy
 // of the offset frontal case (one with a warning, one with a limit choice). Every cell against the JSON
 // Lines document of the same row.
 TEST_CASE("batch's CSV cells are the JSON document's values, escapes, strategies and warnings included", "[batch]") {

@@ -1,5 +1,5 @@
-// The CSV case rows' two routes to the case reader (cli/src/batch_csv.hpp): the tree built straight
-// from the cells (case_tree) against the text case_json writes read by io::parse_json_tree. Wherever
+// The CSV case rows' two routes to the case reader (cli/library/include/impact3d/cli/batch_csv.hpp): the tree built straight
+// from the cells (case_tree) against the text case_json writes read by case_format::parse_json_tree. Wherever
 // the cells' tree is built it is the text's tree, value for value and bit for bit, and the case reader
 // says the same of both; the rows it leaves to the text are those whose text the JSON reader's fast
 // route would leave to the checking parser. The same is fuzzed by tests/fuzz/fuzz_batch_csv.cpp.
@@ -10,15 +10,15 @@
 
 #include <catch2/catch.hpp>
 
-#include "../cli/src/batch_csv.hpp"
+#include "impact3d/cli/batch_csv.hpp"
 #include "fuzz/json_tree_equal.hpp"
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/json_tree.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/case_format/json_tree.hpp"
 
 namespace {
 
 using namespace impact3d;
-using io::JsonValue;
+using case_format::JsonValue;
 using cli::csv::Cell;
 using cli::csv::CaseColumns;
 using cli::csv::RowTree;
@@ -52,21 +52,21 @@ Routes routes(const CaseColumns& columns, const std::string& line) {
   r.reused = row.reused();
   JsonValue tree;
   try {
-    tree = io::parse_json_tree(columns.case_json(line));
-  } catch (const io::CaseError&) {
+    tree = case_format::parse_json_tree(columns.case_json(line));
+  } catch (const case_format::CaseError&) {
     r.same = !r.built;  // a text the JSON reader refuses must not have had a tree built from its cells
     return r;
   }
-  if (r.built && !io::json_tree_equal(direct, tree)) return r;
+  if (r.built && !case_format::json_tree_equal(direct, tree)) return r;
   std::string from_text, from_row;
   try {
-    (void)io::read_case_tree(tree);
-  } catch (const io::CaseError& e) {
+    (void)case_format::read_case_tree(tree);
+  } catch (const case_format::CaseError& e) {
     from_text = e.line();
   }
   try {
     (void)columns.case_spec(line);
-  } catch (const io::CaseError& e) {
+  } catch (const case_format::CaseError& e) {
     from_row = e.line();
   }
   r.same = from_text == from_row;
@@ -161,7 +161,7 @@ TEST_CASE("exam: an object built where the last row had an array keeps its leave
       columns.cells_of(line, cells);
       REQUIRE(columns.case_tree(cells, row));
       reused += row.reused();
-      CHECK(io::json_tree_equal(row.tree(), io::parse_json_tree(columns.case_json(line))));
+      CHECK(case_format::json_tree_equal(row.tree(), case_format::parse_json_tree(columns.case_json(line))));
     }
     CHECK(reused == k.reused);
   }

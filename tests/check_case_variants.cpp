@@ -1,4 +1,4 @@
-// Variants of one case (io/case_variants.hpp) against the case file edited as text: a variant with
+// Variants of one case (case_format/case_variants.hpp) against the case file edited as text: a variant with
 // values at given paths reads as the same case as the file with those numbers written in, for seeded
 // random values; copies vary independently; a path that names nothing, or no number, is refused at its
 // given place; a variant that breaks the case's rules is refused with the case's message.
@@ -11,13 +11,13 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "impact3d/io/case_variants.hpp"
-#include "impact3d/io/format_double.hpp"
+#include "impact3d/case_format/case_variants.hpp"
+#include "impact3d/case_format/format_double.hpp"
 #include "impact3d/uncertainty/philox.hpp"
 
 namespace {
 
-using namespace impact3d::io;
+using namespace impact3d::case_format;
 
 std::string fig8() {
   std::ifstream in(IMPACT3D_EXAMPLES_DIR "/fig8_side_impact.json", std::ios::binary);

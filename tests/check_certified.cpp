@@ -13,9 +13,9 @@
 #include <flint/fmpq.h>
 #include <fmt/format.h>
 
-#include "impact3d/numeric/certified.hpp"
-#include "impact3d/numeric/exact_analysis.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/mechanics/certified.hpp"
+#include "impact3d/mechanics/exact_analysis.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
 #include "support.hpp"
 
 using namespace impact3d;
@@ -99,8 +99,8 @@ bool meets(const Ball& b, const mp::float100& x100, const mp::float100& allowanc
 
 // Both impulse centres on the normal line, a 3-4-5 direction (the frame's entries are not dyadic, so the
 // balls carry radii), the bodies approaching along it with no sliding: K n is parallel to n.
-io::CaseSpec case_on_345_normal(const std::string& restitution, const std::string& strategies) {
-  return io::read_case(R"({"name": "no sliding along a 3-4-5 normal", "units": "SI",
+case_format::CaseSpec case_on_345_normal(const std::string& restitution, const std::string& strategies) {
+  return case_format::read_case(R"({"name": "no sliding along a 3-4-5 normal", "units": "SI",
     "vehicles": [
       {"name": "A", "mass": 1450, "inertia": {"Ixx": 520, "Iyy": 2200, "Izz": 2400},
        "orientation_deg": {"yaw": 0, "pitch": 0, "roll": 0}, "velocity": [7.8, 10.4, 0],
@@ -122,11 +122,11 @@ TEST_CASE("certified balls hold the exact fractions of every rational case", "[c
   paths.push_back(example("fig8_side_impact.json"));
   for (const auto& path : paths) {
     INFO(path);
-    const io::CaseSpec c = load_spec(path);
+    const case_format::CaseSpec c = load_spec(path);
     for (Engine engine : kEngines) {
-      const ExactAnalysis x = exact_analyze(io::to_scene<rational>(c), io::to_strategies<rational>(c), engine);
+      const ExactAnalysis x = exact_analyze(case_format::to_scene<rational>(c), case_format::to_strategies<rational>(c), engine);
       const BallBits bits(128);
-      const CertifiedAnalysis b = certified_analyze(io::to_scene<Ball>(c), io::to_strategies<Ball>(c), engine);
+      const CertifiedAnalysis b = certified_analyze(case_format::to_scene<Ball>(c), case_format::to_strategies<Ball>(c), engine);
       ++cases;
       tally.one(b.analysis.m_prime, x.m_prime);
       for (int k = 0; k < 3; ++k) tally.vec(Vec3<Ball>(b.analysis.K.row(k).transpose()), Vec3<rational>(x.K.row(k).transpose()));
@@ -149,7 +149,7 @@ TEST_CASE("certified balls hold the exact fractions of every rational case", "[c
                                           std::pair{&s.impulse.cir, &q.impulse.cir}})
           if (*ball && *exact) tally.one(**ball, **exact);
         // What the balls could not decide on a rational case can only be an exact tie.
-        const auto ties = exact_ties(b.decisions[k], io::to_strategies<rational>(c)[k], q, s);
+        const auto ties = exact_ties(b.decisions[k], case_format::to_strategies<rational>(c)[k], q, s);
         for (const auto& d : b.decisions[k]) {
           INFO(d.name << ": " << d.detail);
           if (d.status == DecisionStatus::undecided) CHECK(std::find(ties.begin(), ties.end(), d.name) != ties.end());
@@ -167,7 +167,7 @@ TEST_CASE("with no sliding and a zero cap, the balls' undecided plane, axis and 
   // uses and, for pc-crash, the Full Impact's contact-plane part. The balls hold 0 with a radius and
   // cannot decide; exact arithmetic says each is a tie. Each undecided decision named below must be
   // among the undecided, or the case did not reach what it tests.
-  const io::CaseSpec c = case_on_345_normal("0.1", R"([{"name": "wach", "mu": 0.3, "limit": "cir"},
+  const case_format::CaseSpec c = case_on_345_normal("0.1", R"([{"name": "wach", "mu": 0.3, "limit": "cir"},
     {"name": "wach", "mu": 0, "limit": "gir"}, {"name": "pc-crash", "mu": 0.5}])");
   namespace n = decision_names;
   // The ratio Wach uses at mu = 0 is the cap's ball only when the cap's (undecided) comparison caps it;
@@ -178,13 +178,13 @@ TEST_CASE("with no sliding and a zero cap, the balls' undecided plane, axis and 
                                                           {n::plane_direction}};
   int checked = 0;
   for (Engine engine : kEngines) {
-    const ExactAnalysis x = exact_analyze(io::to_scene<rational>(c), io::to_strategies<rational>(c), engine);
+    const ExactAnalysis x = exact_analyze(case_format::to_scene<rational>(c), case_format::to_strategies<rational>(c), engine);
     const BallBits bits(128);
-    const CertifiedAnalysis b = certified_analyze(io::to_scene<Ball>(c), io::to_strategies<Ball>(c), engine);
+    const CertifiedAnalysis b = certified_analyze(case_format::to_scene<Ball>(c), case_format::to_strategies<Ball>(c), engine);
     for (std::size_t k = 0; k < 3; ++k) {
       INFO("engine " << static_cast<int>(engine) << ", strategy " << k);
       REQUIRE(x.results[k].solution);
-      const auto ties = exact_ties(b.decisions[k], io::to_strategies<rational>(c)[k], *x.results[k].solution,
+      const auto ties = exact_ties(b.decisions[k], case_format::to_strategies<rational>(c)[k], *x.results[k].solution,
                                    b.analysis.solutions[k]);
       for (const char* name : expected[k]) {
         INFO(name);
@@ -204,7 +204,7 @@ TEST_CASE("with no sliding and a zero cap, the balls' undecided plane, axis and 
           std::find_if(guarded.begin(), guarded.end(), [](const Decision& e) { return e.name == n::plane_direction; });
       REQUIRE(plane != guarded.end());
       guarded.insert(plane + 1, Decision{n::unnamed, DecisionStatus::undecided, "inserted by the test"});
-      CHECK(exact_ties(guarded, io::to_strategies<rational>(c)[k], *x.results[k].solution, b.analysis.solutions[k]) ==
+      CHECK(exact_ties(guarded, case_format::to_strategies<rational>(c)[k], *x.results[k].solution, b.analysis.solutions[k]) ==
             std::vector<std::string>{n::plane_direction});
     }
   }
@@ -217,18 +217,18 @@ TEST_CASE("a decision that asks several questions is a tie only where each one l
   // ball holds 0 too. The volume (Figure 2) asks of all three: two exact zeros and one nonzero left open
   // is no tie, though either zero alone once made it one. The swerve asks whether the initial sliding
   // is zero, which it is exactly: a tie. (The sliding along z, exactly zero in balls too, is no question.)
-  const io::CaseSpec c = case_on_345_normal("0.000000001", R"([{"name": "pc-crash", "mu": 5}])");
+  const case_format::CaseSpec c = case_on_345_normal("0.000000001", R"([{"name": "pc-crash", "mu": 5}])");
   namespace n = decision_names;
   int checked = 0;
   for (Engine engine : kEngines) {
     INFO("engine " << static_cast<int>(engine));
-    const ExactAnalysis x = exact_analyze(io::to_scene<rational>(c), io::to_strategies<rational>(c), engine);
+    const ExactAnalysis x = exact_analyze(case_format::to_scene<rational>(c), case_format::to_strategies<rational>(c), engine);
     REQUIRE(x.results[0].solution);
     const auto& q = *x.results[0].solution;
     REQUIRE(q.V_rf.x() != rational(0));
     REQUIRE(q.V_rf.y() == rational(0));  // what made the volume a tie before
     const BallBits bits(24);
-    const CertifiedAnalysis b = certified_analyze(io::to_scene<Ball>(c), io::to_strategies<Ball>(c), engine);
+    const CertifiedAnalysis b = certified_analyze(case_format::to_scene<Ball>(c), case_format::to_strategies<Ball>(c), engine);
     const auto& s = b.analysis.solutions[0];
     REQUIRE(s.V_rf.x().contains_zero());
     auto status = [&](const char* name) {
@@ -238,7 +238,7 @@ TEST_CASE("a decision that asks several questions is a tie only where each one l
     };
     REQUIRE(status(n::volume) == DecisionStatus::undecided);
     REQUIRE(status(n::swerve) == DecisionStatus::undecided);
-    const auto ties = exact_ties(b.decisions[0], io::to_strategies<rational>(c)[0], q, s);
+    const auto ties = exact_ties(b.decisions[0], case_format::to_strategies<rational>(c)[0], q, s);
     CHECK(std::find(ties.begin(), ties.end(), n::volume) == ties.end());
     CHECK(std::find(ties.begin(), ties.end(), n::swerve) != ties.end());
     CHECK(std::find(ties.begin(), ties.end(), n::plane_direction) != ties.end());
@@ -288,7 +288,7 @@ namespace {
 
 // A seeded 3D case as a file would give it: decimal angles (so the rotations are orthonormal in exact
 // arithmetic, as the constraint rows assume), products of inertia, angular velocities, pitch and roll.
-io::CaseSpec random_3d_case(std::mt19937_64& g, const std::string& restitution, const std::string& strategies) {
+case_format::CaseSpec random_3d_case(std::mt19937_64& g, const std::string& restitution, const std::string& strategies) {
   std::uniform_int_distribution<int> i(-999, 999);
   const auto d = [&](double scale) { return fmt::format("{:.3f}", scale * i(g) / 1000.0); };
   const auto vehicle = [&](double vx) {
@@ -299,7 +299,7 @@ io::CaseSpec random_3d_case(std::mt19937_64& g, const std::string& restitution, 
                        1300 + (i(g) + 999) / 2, 600, j01, j01, 2500, 2800, d(180), d(8), d(8), vx, d(6), d(1),
                        d(0.5), d(0.5), d(1), d(2), d(1), d(0.3));
   };
-  return io::read_case(R"({"name": "seeded 3D", "units": "SI", "vehicles": [)" + vehicle(12) + ", " + vehicle(-12) +
+  return case_format::read_case(R"({"name": "seeded 3D", "units": "SI", "vehicles": [)" + vehicle(12) + ", " + vehicle(-12) +
                        R"(], "contact": {"normal_yaw_deg": )" + d(180) + R"(, "normal_pitch_deg": )" + d(10) +
                        R"(, "tangent_roll_deg": )" + d(30) + R"(}, "restitution": )" + restitution +
                        R"(, "strategy": )" + strategies + "}");
@@ -321,17 +321,17 @@ TEST_CASE("the zeros a strategy's constraint rows impose are decided by construc
   namespace n = decision_names;
   int solutions = 0, by_rows = 0, cases = 0;
   while (cases < 12) {
-    io::CaseSpec c;
+    case_format::CaseSpec c;
     Analysis<mp::float100> a100;
     try {
       c = random_3d_case(g, cases % 3 == 0 ? "0" : "0.3", strategies);
-      a100 = analyze(io::to_scene<mp::float100>(c), io::to_strategies<mp::float100>(c));
-    } catch (const io::CaseError&) {
+      a100 = analyze(case_format::to_scene<mp::float100>(c), case_format::to_strategies<mp::float100>(c));
+    } catch (const case_format::CaseError&) {
       continue;  // not approaching: drawn again
     }
     ++cases;
     const BallBits bits(256);
-    const CertifiedAnalysis b = certified_analyze(io::to_scene<Ball>(c), io::to_strategies<Ball>(c));
+    const CertifiedAnalysis b = certified_analyze(case_format::to_scene<Ball>(c), case_format::to_strategies<Ball>(c));
     for (std::size_t k = 0; k < c.strategies.size(); ++k) {
       INFO("case " << cases << ", strategy " << k);
       const auto& sb = b.analysis.solutions[k];

@@ -14,11 +14,11 @@
 #include <random>
 #include <vector>
 
-#include "impact3d/numeric/fixed_float.hpp"
-#include "impact3d/numeric/limb_product.hpp"
-#include "impact3d/numeric/lean.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
-#include "impact3d/numeric/raw_collision.hpp"
+#include "impact3d/scalar/fixed_float.hpp"
+#include "impact3d/scalar/limb_product.hpp"
+#include "impact3d/mechanics/lean.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
+#include "impact3d/mechanics/raw_collision.hpp"
 #include "support.hpp"
 
 using F = impact3d::mp::FixedFloat<334>;

@@ -1,4 +1,4 @@
-// The thread `batch` keeps for a whole run (cli/src/helper_thread.hpp): each task started runs once and
+// The thread `batch` keeps for a whole run (cli/library/include/impact3d/cli/helper_thread.hpp): each task started runs once and
 // is finished when wait() returns, what a task throws comes out of wait() and leaves the thread serving,
 // and a helper destroyed with a task still running finishes it first. Known answers by counting.
 #include <catch2/catch.hpp>
@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "../cli/src/helper_thread.hpp"
+#include "impact3d/cli/helper_thread.hpp"
 
 using impact3d::cli::HelperThread;
 

@@ -12,15 +12,16 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/json_pick.hpp"
-#include "impact3d/io/render.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/case_format/json_pick.hpp"
+#include "impact3d/studies/precision.hpp"
 
 #include "support.hpp"
 
 namespace {
 
-using namespace impact3d::io;
+using namespace impact3d::case_format;
+using namespace impact3d::studies;
 using nlohmann::json;
 
 // Every value's path in the document, containers included.

@@ -15,13 +15,13 @@
 #include <catch2/catch.hpp>
 
 #include "fuzz/json_tree_equal.hpp"
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/json_tree.hpp"
-#include "impact3d/io/read_case.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/case_format/json_tree.hpp"
+#include "impact3d/case_format/read_case.hpp"
 
 namespace {
 
-using namespace impact3d::io;
+using namespace impact3d::case_format;
 
 std::vector<std::string> documents(const std::string& dir) {
   std::vector<std::string> out;
@@ -186,7 +186,7 @@ TEST_CASE("same_key is string equality, at every key length") {
     std::string b = a;
     if (g() % 2 && !b.empty()) b[g() % b.size()] ^= 3;
     if (g() % 8 == 0) b.push_back('a');
-    CHECK(impact3d::io::same_key(a, b) == (std::string_view(a) == std::string_view(b)));
+    CHECK(impact3d::case_format::same_key(a, b) == (std::string_view(a) == std::string_view(b)));
     ++compared;
     equal += a == b;
   }

@@ -1,4 +1,4 @@
-// The lean solve (numeric/lean.hpp) against analyze: the same strategy code on the same Problem, so the
+// The lean solve (mechanics/lean.hpp) against analyze: the same strategy code on the same Problem, so the
 // impulse, the regime, the ratios and the post-impact velocities must be equal bit for bit, and the
 // warnings the same codes, although the lean path bounds the condition of K instead of computing it
 // and computes it only when a decision falls within the bound. Seeded random collisions, every
@@ -18,9 +18,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact3d/numeric/lean.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
-#include "impact3d/numeric/rotation.hpp"
+#include "impact3d/mechanics/lean.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
+#include "impact3d/mechanics/rotation.hpp"
 #include "support.hpp"
 
 // Every allocation of this program is counted, so that the lean path's "no heap per case" is measured.

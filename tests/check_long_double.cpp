@@ -72,10 +72,10 @@ TEST_CASE("double agrees with long double within its rounding bound: examples re
   for (const char* name : {"fig8_side_impact.json", "offset_frontal.json", "override_pickup_into_sedan_rear.json",
                            "us_pickup_into_sedan.json"}) {
     INFO(name);
-    const io::CaseSpec c = load_spec(example(name));
-    const Scene<double> s = io::to_scene<double>(c);
+    const case_format::CaseSpec c = load_spec(example(name));
+    const Scene<double> s = case_format::to_scene<double>(c);
     // Each precision converts the decimal text itself, so inputs differ by double's input rounding.
-    compare(analyze(s, io::to_strategies<double>(c)), analyze(io::to_scene<LD>(c), io::to_strategies<LD>(c)),
+    compare(analyze(s, case_format::to_strategies<double>(c)), analyze(case_format::to_scene<LD>(c), case_format::to_strategies<LD>(c)),
             velocity_scale(s));
   }
 }

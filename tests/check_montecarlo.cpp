@@ -1,4 +1,4 @@
-// The Monte Carlo runner (io/montecarlo.hpp) on the Figure 8 case, against what is known without it:
+// The Monte Carlo runner (studies/montecarlo.hpp) on the Figure 8 case, against what is known without it:
 // - an output linear in a normal input has the analytic mean and standard deviation (within their
 //   sampling errors), and exactly the linear map of the sampled inputs' mean;
 // - percentiles of a uniform input pushed through a known increasing map are that map's percentiles;
@@ -21,15 +21,16 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "impact3d/io/case_variants.hpp"
-#include "impact3d/io/montecarlo.hpp"
-#include "impact3d/io/render.hpp"
-#include "impact3d/io/strategy_option.hpp"
+#include "impact3d/case_format/case_variants.hpp"
+#include "impact3d/studies/montecarlo.hpp"
+#include "impact3d/studies/precision.hpp"
+#include "impact3d/case_format/strategy_option.hpp"
 
 namespace {
 
 using namespace impact3d;
-using namespace impact3d::io;
+using namespace impact3d::case_format;
+using namespace impact3d::studies;
 using nlohmann::json;
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();

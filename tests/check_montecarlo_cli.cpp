@@ -97,7 +97,7 @@ TEST_CASE("the Figure 8 Monte Carlo: the contract's JSON, the same bytes at any 
 }
 
 // At 100 digits every thread leaves MPFR's caches (pi, the arctangent's tables) behind unless it frees
-// them before it ends (numeric/thread_caches.hpp); the sanitizer run of this case sees any it loses.
+// them before it ends (scalar/thread_caches.hpp); the sanitizer run of this case sees any it loses.
 TEST_CASE("at 100 digits the same bytes on one thread and on two, the samples shared between them") {
   std::string out[2];
   for (int jobs = 1; jobs <= 2; ++jobs) {

@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "cli_process.hpp"
-#include "impact3d/numeric/analysis.hpp"
+#include "impact3d/mechanics/analysis.hpp"
 #include "peer_collisions.hpp"
 
 using namespace impact3d;

@@ -1,4 +1,4 @@
-// Nothing lost (cli/src/output_file.hpp): every writer of the program on a full disk (a 16 KiB tmpfs,
+// Nothing lost (cli/library/include/impact3d/cli/output_file.hpp): every writer of the program on a full disk (a 16 KiB tmpfs,
 // mounted here when run as root, as CI runs) leaves the old file whole and no partial file, with one
 // line and a non-zero exit; a character device and a FIFO (made here with mknod and mkfifo in a scratch
 // directory, never under /dev) are written as streams and stay what they are; a directory, a socket, a

@@ -6,10 +6,10 @@
 #include <limits>
 #include <random>
 
-#include "impact3d/numeric/autodiff.hpp"
-#include "impact3d/numeric/ball.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
-#include "impact3d/numeric/planar_norm.hpp"
+#include "impact3d/scalar/autodiff.hpp"
+#include "impact3d/scalar/ball.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
+#include "impact3d/scalar/planar_norm.hpp"
 #include "support.hpp"
 
 using namespace impact3d;

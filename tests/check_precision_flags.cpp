@@ -13,9 +13,9 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
-#include "impact3d/numeric/precision_warnings.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
+#include "impact3d/mechanics/precision_warnings.hpp"
 
 using namespace impact3d;
 
@@ -73,7 +73,7 @@ void check(const Analysis<T>& a, const Analysis<F>& ref, Tally& t) {
     CHECK(bound <= rounding::kTrustedFraction);
     double err = 0;
     for (int i = 0; i < 3; ++i) {
-      const double d = static_cast<double>(F(io::scalar_to_text(s.impulse.P_C(i), 25)) - r.impulse.P_C(i));
+      const double d = static_cast<double>(F(case_format::scalar_to_text(s.impulse.P_C(i), 25)) - r.impulse.P_C(i));
       err += d * d;
     }
     CHECK(std::sqrt(err) <= bound * static_cast<double>(r.impulse.P_C.norm()));
@@ -85,16 +85,16 @@ template <typename T>
 void sweep(Engine engine, Tally& t, int cases) {
   std::mt19937_64 g(20261121);
   for (int i = 0; i < cases; ++i) {
-    const io::CaseSpec spec = io::read_case(ill_conditioned_case(g));
+    const case_format::CaseSpec spec = case_format::read_case(ill_conditioned_case(g));
     Analysis<F> ref;
     try {
-      ref = analyze(io::to_scene<F>(spec), io::to_strategies<F>(spec), Engine::direct);
+      ref = analyze(case_format::to_scene<F>(spec), case_format::to_strategies<F>(spec), Engine::direct);
     } catch (const std::exception&) {
       continue;  // not approaching, or no impulse even at 50 digits: nothing to hold the precision to
     }
     ++t.cases;
     try {
-      check(analyze(io::to_scene<T>(spec), io::to_strategies<T>(spec), engine), ref, t);
+      check(analyze(case_format::to_scene<T>(spec), case_format::to_strategies<T>(spec), engine), ref, t);
     } catch (const SolveError&) {
       ++t.solve_errors;  // refusing is not silently wrong
     }

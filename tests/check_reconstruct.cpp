@@ -1,4 +1,4 @@
-// The reconstruction (io/reconstruct.hpp) against what is known without it:
+// The reconstruction (studies/reconstruct.hpp) against what is known without it:
 // - round trip: seeded random collisions in 3D and in the planar limit are solved forward from known
 //   speeds for every strategy and regime; their exact post-impact velocities, fed back as evidence,
 //   give back the speeds and the regime, and the reported sd equal those of a Jacobian by central
@@ -25,17 +25,18 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
-#include "impact3d/io/read_evidence.hpp"
-#include "impact3d/io/reconstruct.hpp"
-#include "impact3d/io/result_numbers.hpp"
-#include "impact3d/io/strategy_option.hpp"
-#include "impact3d/io/to_scene.hpp"
+#include "impact3d/case_format/read_evidence.hpp"
+#include "impact3d/studies/reconstruct.hpp"
+#include "impact3d/studies/result_numbers.hpp"
+#include "impact3d/case_format/strategy_option.hpp"
+#include "impact3d/case_format/to_scene.hpp"
 #include "support.hpp"
 
 namespace {
 
 using namespace impact3d;
-using namespace impact3d::io;
+using namespace impact3d::case_format;
+using namespace impact3d::studies;
 constexpr double kEps = 0x1p-52;
 
 // Uniform in [0, 1) and standard normal draws from the generator's bits, the same on every standard

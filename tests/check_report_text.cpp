@@ -10,9 +10,9 @@
 #include <regex>
 #include <sstream>
 
-#include "impact3d/io/present.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/render.hpp"
+#include "impact3d/case_format/present.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/studies/precision.hpp"
 #include "support.hpp"
 
 using namespace impact3d;
@@ -231,12 +231,12 @@ Summary check_summary(const std::string& text, const json& doc) {
   return out;
 }
 
-std::string render_as(const io::CaseSpec& spec, const char* format, std::optional<Units> u) {
-  io::RenderOptions o;
+std::string render_as(const case_format::CaseSpec& spec, const char* format, std::optional<Units> u) {
+  case_format::RenderOptions o;
   o.format = format;
   o.digits = kDigits;
   o.units = u;
-  return io::render(spec, "double", o);
+  return studies::render(spec, "double", o);
 }
 
 void check_width(const std::string& text) {
@@ -260,7 +260,7 @@ std::vector<std::filesystem::path> bundled_cases() {
 TEST_CASE("every number of the summary is the JSON's, in every bundled case and two unit systems", "[report]") {
   int cases = 0, blocks = 0, numbers = 0;
   for (const auto& path : bundled_cases()) {
-    const io::CaseSpec spec = load_spec(path);
+    const case_format::CaseSpec spec = load_spec(path);
     const Units other = spec.units == Units::SI ? Units::US : Units::metric_kmh;
     for (const std::optional<Units> u : {std::optional<Units>{}, std::optional<Units>{other}}) {
       INFO(path.filename().string() << (u ? " in " + std::string(units_name(*u)) : std::string()));
@@ -278,7 +278,7 @@ TEST_CASE("every number of the summary is the JSON's, in every bundled case and 
 }
 
 TEST_CASE("names too long for a line are wrapped or cut, never past 80 columns", "[report]") {
-  io::CaseSpec spec = load_spec(example("fig8_side_impact.json"));
+  case_format::CaseSpec spec = load_spec(example("fig8_side_impact.json"));
   spec.name = std::string(70, 'N') + " " + std::string(120, 'M');
   spec.description = std::string(300, 'd') + " and some words after it";
   spec.vehicles[0].name = std::string(150, 'a');

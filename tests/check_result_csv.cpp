@@ -1,4 +1,4 @@
-// The result CSV written straight from the analysis (io/result_csv.hpp's result_csv_rows, which
+// The result CSV written straight from the analysis (case_format/result_csv.hpp's result_csv_rows, which
 // `render` takes for --format csv at a floating precision) against the same rows taken from the result
 // document as it is written (result_csv_from_document, the route of exact results): byte for byte, on
 // every bundled case and on seeded variants of them (speeds, impulse centres, restitution, strategies,
@@ -17,19 +17,20 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/render.hpp"
-#include "impact3d/io/result_csv.hpp"
-#include "impact3d/io/result_json.hpp"
-#include "impact3d/io/to_scene.hpp"
-#include "impact3d/numeric/strategy.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/studies/precision.hpp"
+#include "impact3d/case_format/result_csv.hpp"
+#include "impact3d/case_format/result_json.hpp"
+#include "impact3d/case_format/to_scene.hpp"
+#include "impact3d/mechanics/strategy.hpp"
 
 #include "support.hpp"
 
 namespace {
 
-using namespace impact3d::io;
+using namespace impact3d::case_format;
+using namespace impact3d::studies;
 using impact3d::Units;
 using nlohmann::json;
 

@@ -7,7 +7,7 @@
 
 #include <boost/math/constants/constants.hpp>
 
-#include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
 #include "support.hpp"
 
 using namespace impact3d;
@@ -84,7 +84,7 @@ TEST_CASE("rotation_zyx_deg_closed equals rotation_zyx_deg entry by entry, but f
 
 // SinCosRadians<float100> takes Arb's enclosures of both and keeps the MPFR number their ends round to,
 // leaving MPFR to decide where they round apart and for zero, tiny, infinite and NaN arguments
-// (numeric/src/mpfr_sin_cos.cpp). Boost's sin and cos are mpfr_sin and mpfr_cos, correctly rounded, so
+// (numeric/scalar/src/mpfr_sin_cos.cpp). Boost's sin and cos are mpfr_sin and mpfr_cos, correctly rounded, so
 // the two must be the same numbers, bit for bit, sign of zero included.
 namespace {
 // The same number, the sign of zero included (-0 == 0 would pass a sine of the wrong sign), or both NaN.

@@ -1,4 +1,4 @@
-// Where `batch` writes its rows (cli/src/row_output.hpp): through the page cache, then, past a number
+// Where `batch` writes its rows (cli/library/include/impact3d/cli/row_output.hpp): through the page cache, then, past a number
 // of bytes, straight to the disk from a stage of whole pages with the last page through the cache.
 // Checked against the bytes given: after every write the file holds exactly what was written so far
 // (so it ends at a whole row), whatever the pieces' sizes, their number (beyond IOV_MAX) and where the
@@ -22,7 +22,7 @@
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
 
-#include "../cli/src/row_output.hpp"
+#include "impact3d/cli/row_output.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// scalar_to_text prints double and long double through std::to_chars (io/scalar_text.hpp) and every
+// scalar_to_text prints double and long double through std::to_chars (case_format/scalar_text.hpp) and every
 // other type through a classic-locale stream; the two must give the same text, since `solve` and `batch`
 // print every result number this way and the contract fixes the digits (%.17g for double). Random bit
 // patterns (subnormals, infinities and NaNs among them) and ordinary magnitudes, at every digit count
@@ -13,11 +13,11 @@
 #include <random>
 #include <utility>
 
-#include "impact3d/io/json_text.hpp"
-#include "impact3d/io/json_writer.hpp"
-#include "impact3d/io/scalar_text.hpp"
-#include "impact3d/numeric/ball.hpp"
-#include "impact3d/numeric/scalars.hpp"
+#include "impact3d/case_format/json_text.hpp"
+#include "impact3d/case_format/json_writer.hpp"
+#include "impact3d/case_format/scalar_text.hpp"
+#include "impact3d/scalar/ball.hpp"
+#include "impact3d/scalar/scalars.hpp"
 
 namespace {
 
@@ -37,7 +37,7 @@ TEST_CASE("scalar_to_text of double and long double is the classic stream's text
   int compared = 0, mismatched = 0;
   auto check = [&](auto x, int digits) {
     ++compared;
-    if (impact3d::io::scalar_to_text(x, digits) != streamed(x, digits)) {
+    if (impact3d::case_format::scalar_to_text(x, digits) != streamed(x, digits)) {
       ++mismatched;
       UNSCOPED_INFO(streamed(x, digits));
     }
@@ -60,7 +60,7 @@ TEST_CASE("scalar_to_text of double and long double is the classic stream's text
 }
 
 // format_g17 decides the rounding from a 192-bit product and leaves only near-ties to std::to_chars
-// (io/format_double.hpp); it must give std::to_chars's text everywhere. Beside random bit patterns: every
+// (case_format/format_double.hpp); it must give std::to_chars's text everywhere. Beside random bit patterns: every
 // binade's ends, the neighbours of each power of ten (where the digit count changes), exact ties at the
 // 18th digit (n + 0.25 and n + 0.75 for 16-digit n below 2^51, where quarters are representable; rounded
 // to even; below 2^50 the guess of the decimal exponent is one short, and the 18-digit product decides),
@@ -70,7 +70,7 @@ TEST_CASE("format_g17 is std::to_chars at 17 digits", "[io]") {
   int compared = 0, mismatched = 0;
   auto check = [&](double x) {
     char mine[32], theirs[32];
-    const std::string a(mine, impact3d::io::format_g17(mine, x));
+    const std::string a(mine, impact3d::case_format::format_g17(mine, x));
     const std::string b(theirs, std::to_chars(theirs, theirs + sizeof theirs, x, std::chars_format::general, 17).ptr);
     ++compared;
     if (a != b) {
@@ -115,7 +115,7 @@ TEST_CASE("format_g17 writes every group of eight digits", "[io]") {
   long compared = 0, mismatched = 0;
   for (std::uint64_t w = 0; w < 100000000; ++w) {
     char mine[32], theirs[32];
-    char* a = impact3d::io::format_g17(mine, static_cast<double>(100000000 + w));
+    char* a = impact3d::case_format::format_g17(mine, static_cast<double>(100000000 + w));
     char* b = std::to_chars(theirs, theirs + sizeof theirs, 100000000 + w).ptr;
     ++compared;
     if (a - mine != b - theirs || std::memcmp(mine, theirs, static_cast<std::size_t>(b - theirs)) != 0) {
@@ -130,11 +130,11 @@ TEST_CASE("format_g17 writes every group of eight digits", "[io]") {
 // sign): every scalar type's text of an infinity or a NaN, at every digit count, is null there, and every
 // finite text is written as it is.
 TEST_CASE("the JSON writer writes non-finite numbers as null and finite ones as their text, at every scalar type", "[io]") {
-  using impact3d::io::JsonWriter;
+  using impact3d::case_format::JsonWriter;
   int compared = 0;
   auto written = [](auto x, int digits) {
     JsonWriter w(true);
-    w.number([&](auto& out) { impact3d::io::append_scalar(out, x, digits); });
+    w.number([&](auto& out) { impact3d::case_format::append_scalar(out, x, digits); });
     std::string s = std::move(w).str();
     s.pop_back();  // the newline
     return s;
@@ -148,7 +148,7 @@ TEST_CASE("the JSON writer writes non-finite numbers as null and finite ones as 
         ++compared;
       }
       for (const T& x : {T(0), T(-T(0)), T(1) / T(3), T(-2) / T(7), T(1e300), T(-1e-300), std::numeric_limits<T>::denorm_min()}) {
-        CHECK(written(x, digits) == impact3d::io::scalar_to_text(x, digits));
+        CHECK(written(x, digits) == impact3d::case_format::scalar_to_text(x, digits));
         ++compared;
       }
     }
@@ -167,7 +167,7 @@ TEST_CASE("the JSON writer writes non-finite numbers as null and finite ones as 
 // drawn mostly from those at the three tests' edges, so that most words hold one; then each edge byte at
 // every place of a key of letters of every length up to 56.
 TEST_CASE("the JSON writer escapes exactly the bytes JSON requires, in strings and in keys", "[io]") {
-  using impact3d::io::JsonWriter;
+  using impact3d::case_format::JsonWriter;
   auto by_byte = [](const std::string& s) {
     std::string q = "\"";
     for (const char ch : s) {
@@ -228,7 +228,7 @@ TEST_CASE("JsonText holds what std::string holds after the same appends", "[io]"
   for (std::size_t before = 0; before <= 40; ++before)
     for (std::size_t n = 0; n <= 80; ++n) {
       const std::size_t from = (before * 7 + n) % (source.size() - n + 1);
-      impact3d::io::JsonText text;
+      impact3d::case_format::JsonText text;
       std::string want;
       const std::size_t held = 7 * before;
       text.append(held, 'x');

@@ -1,4 +1,4 @@
-// The sensitivities (io/sensitivity.hpp: forward-mode automatic differentiation on Eigen's
+// The sensitivities (studies/sensitivity.hpp: forward-mode automatic differentiation on Eigen's
 // AutoDiffScalar) against what is known without automatic differentiation:
 // - central differences of the 100-digit solve, for every example, result, output and input: the step
 //   h = 1e-20 max(|x|, 1) leaves a truncation error of order h^2 = 1e-40 and a rounding error of order
@@ -15,18 +15,19 @@
 
 #include <catch2/catch.hpp>
 
-#include "impact3d/io/case_numbers.hpp"
-#include "impact3d/io/result_numbers.hpp"
-#include "impact3d/io/scalar_text.hpp"
-#include "impact3d/io/sensitivity.hpp"
-#include "impact3d/io/to_scene.hpp"
-#include "impact3d/numeric/analysis.hpp"
+#include "impact3d/case_format/case_numbers.hpp"
+#include "impact3d/studies/result_numbers.hpp"
+#include "impact3d/case_format/scalar_text.hpp"
+#include "impact3d/studies/sensitivity.hpp"
+#include "impact3d/case_format/to_scene.hpp"
+#include "impact3d/mechanics/analysis.hpp"
 #include "support.hpp"
 
 namespace {
 
 using namespace impact3d;
-using namespace impact3d::io;
+using namespace impact3d::case_format;
+using namespace impact3d::studies;
 using F = mp::float100;
 
 const char* const kExamples[] = {"fig8_side_impact.json", "offset_frontal.json", "override_pickup_into_sedan_rear.json",

@@ -1,4 +1,4 @@
-// Planes and lines cut to a figure's box (cli/src/figures/box_clip.cpp), on cuts of the unit cube known
+// Planes and lines cut to a figure's box (cli/library/src/figures/box_clip.cpp), on cuts of the unit cube known
 // by hand: a plane parallel to a face gives the face's square, x + y + z = 3/2 the regular hexagon
 // through the midpoints of six edges, a plane past a corner nothing; the main diagonal's line runs
 // corner to corner.
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "../cli/src/figures/box_clip.hpp"
+#include "impact3d/cli/figures/box_clip.hpp"
 
 using impact3d::cli::Box;
 using impact3d::cli::P3;

@@ -5,8 +5,8 @@
 // inertia shorthand with zero products), or the JSON-path syntax docs/limits-and-exit-status.md documents for error lines.
 #include <catch2/catch.hpp>
 
-#include "impact3d/io/json_literals.hpp"
-#include "impact3d/io/render.hpp"
+#include "impact3d/case_format/json_literals.hpp"
+#include "impact3d/studies/precision.hpp"
 #include "support.hpp"
 
 using namespace impact3d;
@@ -27,7 +27,7 @@ std::string minimal(const std::string& contact = R"("contact": {"normal_yaw_deg"
 }  // namespace
 
 TEST_CASE("number literals are kept as written", "[reader]") {
-  const io::CaseSpec c = io::read_case(minimal());
+  const case_format::CaseSpec c = case_format::read_case(minimal());
   CHECK(c.vehicles[0].velocity[0].text == "10.10000000000000000001");
   CHECK(c.restitution.text == "0.1");
   CHECK(c.vehicles[0].mass.text == "1500");
@@ -36,7 +36,7 @@ TEST_CASE("number literals are kept as written", "[reader]") {
 }
 
 TEST_CASE("defaults: SI, zero orientation and angular velocity, contact pitch and roll", "[reader]") {
-  const io::CaseSpec c = io::read_case(minimal());
+  const case_format::CaseSpec c = case_format::read_case(minimal());
   CHECK(c.units == Units::SI);
   CHECK(c.vehicles[0].yaw.value == 0.0);
   CHECK(c.vehicles[0].angular_velocity[2].value == 0.0);
@@ -49,37 +49,37 @@ TEST_CASE("a contact frame given by vectors equals the one given by angles", "[r
   // t = Rz(90) e_y = -x, with no rounding (sin_cos_deg is exact at quarter turns); the vectors give
   // n = (0, 2, 0) / 2 = +y and t = (-1, 0.3, 0) with its n part removed, normalised: -x. The vector path
   // rounds in a normalisation and a Gram-Schmidt step: a few eps.
-  const auto by_angles = io::to_scene<double>(io::read_case(minimal()));
+  const auto by_angles = case_format::to_scene<double>(case_format::read_case(minimal()));
   const auto by_vectors =
-      io::to_scene<double>(io::read_case(minimal(R"("contact": {"normal": [0, 2, 0], "tangent": [-1, 0.3, 0]})")));
+      case_format::to_scene<double>(case_format::read_case(minimal(R"("contact": {"normal": [0, 2, 0], "tangent": [-1, 0.3, 0]})")));
   CHECK((by_angles.R_WC - by_vectors.R_WC).cwiseAbs().maxCoeff() <= 4 * eps);
 }
 
 TEST_CASE("strategy arrays and brach critical ratios", "[reader]") {
-  const io::CaseSpec c = io::read_case(minimal(R"("contact": {"normal_yaw_deg": 90})",
+  const case_format::CaseSpec c = case_format::read_case(minimal(R"("contact": {"normal_yaw_deg": 90})",
                                                R"([{"name": "wach", "mu": 0.4, "limit": "gir"},
                                                    {"name": "brach", "mu_t": "critical", "mu_z": -0.05}])"));
   REQUIRE(c.strategies.size() == 2);
-  CHECK(io::strategy_kind(c.strategies[0].kind).name == "wach");
+  CHECK(case_format::strategy_kind(c.strategies[0].kind).name == "wach");
   CHECK(c.strategies[0].choice("limit") == "gir");
   CHECK(!c.strategies[1].number("mu_t"));
   CHECK(c.strategies[1].number("mu_z")->text == "-0.05");
 }
 
 TEST_CASE("command-line strategies use the same rules", "[reader]") {
-  const auto s = io::read_strategy_option("wach:mu=0.35,limit=gir", 0);
-  CHECK(io::strategy_kind(s.kind).name == "wach");
+  const auto s = case_format::read_strategy_option("wach:mu=0.35,limit=gir", 0);
+  CHECK(case_format::strategy_kind(s.kind).name == "wach");
   CHECK(s.number("mu")->text == "0.35");
   CHECK(s.choice("limit") == "gir");
-  const auto b = io::read_strategy_option("brach:mu_t=critical,mu_z=0.1", 1);
+  const auto b = case_format::read_strategy_option("brach:mu_t=critical,mu_z=0.1", 1);
   CHECK(!b.number("mu_t"));
   CHECK(b.number("mu_z")->text == "0.1");
-  const auto j = io::read_strategy_option(R"({"name": "pc-crash", "mu": 0.5})", 2);
+  const auto j = case_format::read_strategy_option(R"({"name": "pc-crash", "mu": 0.5})", 2);
   CHECK(j.number("mu")->text == "0.5");
   try {
-    io::read_strategy_option("pc-crash:mu=-1", 3);
+    case_format::read_strategy_option("pc-crash:mu=-1", 3);
     FAIL("accepted a negative mu");
-  } catch (const io::CaseError& e) {
+  } catch (const case_format::CaseError& e) {
     // The contract: mu >= 0 for pc-crash; the path names the fourth --strategy option (index 3).
     CHECK(e.line() == "--strategy[3].mu: must be >= 0 (got -1)");
   }
@@ -88,31 +88,31 @@ TEST_CASE("command-line strategies use the same rules", "[reader]") {
 TEST_CASE("paths print keys that are not identifiers quoted and escaped", "[reader]") {
   // docs/limits-and-exit-status.md's rule for error lines: keys that are not identifiers are quoted as in $["a/b"] (JSONPath's
   // bracket notation), control characters printed as \n or \xNN (ESC = 0x1B), so every error stays one line.
-  CHECK(io::member_path(io::element_path("$.vehicles", 0), "mass") == "$.vehicles[0].mass");
-  CHECK(io::member_path("$", "vehicles/0/mass") == "$[\"vehicles/0/mass\"]");
-  CHECK(io::member_path("$", "0") == "$[\"0\"]");
-  CHECK(io::member_path("$", "a\nb\x1b[31m") == "$[\"a\\nb\\x1B[31m\"]");
+  CHECK(case_format::member_path(case_format::element_path("$.vehicles", 0), "mass") == "$.vehicles[0].mass");
+  CHECK(case_format::member_path("$", "vehicles/0/mass") == "$[\"vehicles/0/mass\"]");
+  CHECK(case_format::member_path("$", "0") == "$[\"0\"]");
+  CHECK(case_format::member_path("$", "a\nb\x1b[31m") == "$[\"a\\nb\\x1B[31m\"]");
 }
 
 TEST_CASE("a description is read, echoed in the result, and printed escaped like the name", "[reader]") {
   // The case author's text: a newline and an escape sequence must not reach a terminal as such.
   std::string text = minimal();
   text.insert(1, R"("name": "a\u001b[31mred", "description": "line one\nline two", )");
-  const io::CaseSpec c = io::read_case(text);
+  const case_format::CaseSpec c = case_format::read_case(text);
   CHECK(c.description == "line one\nline two");
-  const std::string report = io::render(c, "double", {"text"});
+  const std::string report = studies::render(c, "double", {"text"});
   CHECK(report.find("impact3d: a\\x1B[31mred (units SI") != std::string::npos);
   CHECK(report.find("line one\\nline two\n") != std::string::npos);
   CHECK(report.find('\x1b') == std::string::npos);
-  const std::string json = io::render(c, "double", {"json"});
+  const std::string json = studies::render(c, "double", {"json"});
   CHECK(json.find(R"("description": "line one\nline two")") != std::string::npos);
   // A description that is not a string is an error at its path.
   std::string bad = minimal();
   bad.insert(1, R"("description": 3, )");
   try {
-    io::read_case(bad);
+    case_format::read_case(bad);
     FAIL("accepted a numeric description");
-  } catch (const io::CaseError& e) {
+  } catch (const case_format::CaseError& e) {
     CHECK(e.line() == "$.description: expected a string, got a number");
   }
 }
@@ -128,8 +128,8 @@ std::string with(std::string text, const std::string& from, const std::string& t
 
 std::string reader_error(const std::string& text) {
   try {
-    io::read_case(text);
-  } catch (const io::CaseError& e) {
+    case_format::read_case(text);
+  } catch (const case_format::CaseError& e) {
     return e.line();
   }
   return "accepted";
@@ -147,7 +147,7 @@ TEST_CASE("zero in any spelling is zero, and a literal with a digit that is not 
   int checked = 0;
   for (const auto& z : zeros) {
     INFO(z);
-    const io::CaseSpec c = io::read_case(with(minimal(), "[0, 12, 0]", "[" + z + ", 12, 0]"));
+    const case_format::CaseSpec c = case_format::read_case(with(minimal(), "[0, 12, 0]", "[" + z + ", 12, 0]"));
     CHECK(c.vehicles[1].velocity[0].value == 0);
     CHECK(reader_error(with(minimal(), "\"mass\": 1500", "\"mass\": " + z)).find("$.vehicles[0].mass: must be > 0") == 0);
     CHECK(reader_error(with(minimal(), "\"mu\": 0.4", "\"mu\": " + z)) == "accepted");

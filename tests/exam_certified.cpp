@@ -17,11 +17,11 @@
 #include <string>
 
 #include "cli_process.hpp"
-#include "impact3d/io/json_tree.hpp"
-#include "impact3d/io/scalar_text.hpp"
-#include "impact3d/numeric/ball.hpp"
-#include "impact3d/numeric/decisions.hpp"
-#include "impact3d/numeric/exact.hpp"
+#include "impact3d/case_format/json_tree.hpp"
+#include "impact3d/case_format/scalar_text.hpp"
+#include "impact3d/scalar/ball.hpp"
+#include "impact3d/mechanics/decisions.hpp"
+#include "impact3d/scalar/exact.hpp"
 
 using namespace impact3d;
 using namespace impact3d::test;
@@ -31,24 +31,24 @@ namespace {
 
 const std::string kFig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
 
-io::JsonValue solve_json(const std::vector<std::string>& args) {
+case_format::JsonValue solve_json(const std::vector<std::string>& args) {
   std::vector<std::string> all = {"solve"};
   all.insert(all.end(), args.begin(), args.end());
   all.insert(all.end(), {"--format", "json"});
   const Run r = run_argv(all);
   INFO(r.err);
   REQUIRE(r.status == 0);
-  return io::parse_json_tree(r.out);
+  return case_format::parse_json_tree(r.out);
 }
 
-const io::JsonValue& at(const io::JsonValue& v, const std::string& key) {
-  const io::JsonValue* x = v.find(key);
+const case_format::JsonValue& at(const case_format::JsonValue& v, const std::string& key) {
+  const case_format::JsonValue* x = v.find(key);
   INFO(key);
   REQUIRE(x);
   return *x;
 }
 
-const io::JsonValue* decision(const io::JsonValue& result, const std::string& prefix) {
+const case_format::JsonValue* decision(const case_format::JsonValue& result, const std::string& prefix) {
   for (const auto& d : at(result, "decisions").items)
     if (at(d, "name").text.rfind(prefix, 0) == 0) return &d;
   return nullptr;
@@ -88,31 +88,31 @@ const char* kIdentityK = R"({
 }  // namespace
 
 TEST_CASE("mu within 1e-20 of the GIR is undecided at 64 bits and decided correctly at 256", "[certified]") {
-  const io::JsonValue ref = solve_json({kFig8, "--precision", "100", "--strategy", "pc-crash:mu=0.4"});
+  const case_format::JsonValue ref = solve_json({kFig8, "--precision", "100", "--strategy", "pc-crash:mu=0.4"});
   const std::string gir100 = at(at(at(ref, "results").items.at(0), "limits"), "gir").text;
   // GIR to 40 places (its 100-digit value is good to far more), then 1e-20 either side.
-  const rational gir = io::scalar_from_text<rational>(gir100.substr(0, 42));
+  const rational gir = case_format::scalar_from_text<rational>(gir100.substr(0, 42));
   const rational step = rational(1) / rational(boost::multiprecision::pow(boost::multiprecision::cpp_int(10), 20));
   int checked = 0;
   for (const int side : {+1, -1}) {
     const std::string mu = decimal_text(gir + rational(side) * step, 40);
     INFO("mu = " << mu);
-    const io::JsonValue at64 = solve_json({kFig8, "--precision", "certified:64", "--strategy", "pc-crash:mu=" + mu});
-    const io::JsonValue& r64 = at(at64, "results").items.at(0);
-    const io::JsonValue* d64 = decision(r64, "regime");
+    const case_format::JsonValue at64 = solve_json({kFig8, "--precision", "certified:64", "--strategy", "pc-crash:mu=" + mu});
+    const case_format::JsonValue& r64 = at(at64, "results").items.at(0);
+    const case_format::JsonValue* d64 = decision(r64, "regime");
     REQUIRE(d64);
     CHECK(at(*d64, "status").text == "undecided");
     // The other branch is there, with the other regime.
-    const io::JsonValue& alternatives = at(r64, "alternatives");
+    const case_format::JsonValue& alternatives = at(r64, "alternatives");
     bool other = false;
     for (const auto& a : alternatives.items)
       if (at(a, "decision").text.rfind("regime", 0) == 0)
         other = at(at(a, "result"), "regime").text != at(r64, "regime").text;
     CHECK(other);
 
-    const io::JsonValue at256 = solve_json({kFig8, "--precision", "certified:256", "--strategy", "pc-crash:mu=" + mu});
-    const io::JsonValue& r256 = at(at256, "results").items.at(0);
-    const io::JsonValue* d256 = decision(r256, "regime");
+    const case_format::JsonValue at256 = solve_json({kFig8, "--precision", "certified:256", "--strategy", "pc-crash:mu=" + mu});
+    const case_format::JsonValue& r256 = at(at256, "results").items.at(0);
+    const case_format::JsonValue* d256 = decision(r256, "regime");
     REQUIRE(d256);
     CHECK(at(*d256, "status").text == "decided");
     CHECK(at(r256, "regime").text == (side > 0 ? "full" : "sliding"));
@@ -130,25 +130,25 @@ TEST_CASE("an exact rational tie is reported as a tie", "[certified]") {
   // The hand derivation, by exact arithmetic first.
   const Run exact = run_argv({"solve", path, "--precision", "exact", "--format", "json"});
   REQUIRE(exact.status == 0);
-  const io::JsonValue x = io::parse_json_tree(exact.out);
+  const case_format::JsonValue x = case_format::parse_json_tree(exact.out);
   CHECK(at(at(at(at(x, "exact"), "results").items.at(0), "limits"), "gir").text == "3/4");
   CHECK(at(at(at(at(x, "exact"), "results").items.at(1), "limits"), "cir").text == "1/2");
 
   for (const std::string precision : {"certified", "certified:64"}) {
     INFO(precision);
-    const io::JsonValue doc = solve_json({path, "--precision", precision});
+    const case_format::JsonValue doc = solve_json({path, "--precision", precision});
     const auto& results = at(doc, "results").items;
     const char* names[] = {"regime", "cap"};
     for (int k = 0; k < 2; ++k) {
-      const io::JsonValue* d = decision(results.at(static_cast<std::size_t>(k)), names[k]);
+      const case_format::JsonValue* d = decision(results.at(static_cast<std::size_t>(k)), names[k]);
       REQUIRE(d);
       CHECK(at(*d, "status").text == "tie");
-      const io::JsonValue* alternatives = results.at(static_cast<std::size_t>(k)).find("alternatives");
+      const case_format::JsonValue* alternatives = results.at(static_cast<std::size_t>(k)).find("alternatives");
       if (alternatives)
         for (const auto& a : alternatives->items) CHECK(at(a, "decision").text.rfind(names[k], 0) != 0);
     }
     // mu = 0.4 < 3/4 by a margin any precision decides.
-    const io::JsonValue* d = decision(results.at(2), "regime");
+    const case_format::JsonValue* d = decision(results.at(2), "regime");
     REQUIRE(d);
     CHECK(at(*d, "status").text == "decided");
     CHECK(at(results.at(2), "regime").text == "sliding");
@@ -157,25 +157,25 @@ TEST_CASE("an exact rational tie is reported as a tie", "[certified]") {
 }
 
 TEST_CASE("every number of a certified document has an enclosure that holds it", "[certified]") {
-  const io::JsonValue doc = solve_json({kFig8, "--precision", "certified:128"});
-  const io::JsonValue& enclosures = at(doc, "enclosures");
+  const case_format::JsonValue doc = solve_json({kFig8, "--precision", "certified:128"});
+  const case_format::JsonValue& enclosures = at(doc, "enclosures");
   int numbers = 0;
-  std::function<void(const io::JsonValue&, const std::string&)> walk = [&](const io::JsonValue& v, const std::string& path) {
-    if (v.is(io::JsonValue::Type::number)) {
+  std::function<void(const case_format::JsonValue&, const std::string&)> walk = [&](const case_format::JsonValue& v, const std::string& path) {
+    if (v.is(case_format::JsonValue::Type::number)) {
       ++numbers;
-      const io::JsonValue* e = enclosures.find(path);
+      const case_format::JsonValue* e = enclosures.find(path);
       INFO(path);
       REQUIRE(e);
       REQUIRE(e->size() == 2);
-      const rational lo = io::scalar_from_text<rational>(e->items[0].text), hi = io::scalar_from_text<rational>(e->items[1].text);
-      const rational mid = io::scalar_from_text<rational>(v.text);
+      const rational lo = case_format::scalar_from_text<rational>(e->items[0].text), hi = case_format::scalar_from_text<rational>(e->items[1].text);
+      const rational mid = case_format::scalar_from_text<rational>(v.text);
       CHECK(lo <= mid);
       CHECK(mid <= hi);
       return;
     }
     for (std::size_t i = 0; i < v.size(); ++i) {
-      if (v.is(io::JsonValue::Type::object) && path.empty() && v.keys[i] == "enclosures") continue;
-      walk(v.items[i], v.is(io::JsonValue::Type::object) ? (path.empty() ? "" : path + ".") + v.keys[i]
+      if (v.is(case_format::JsonValue::Type::object) && path.empty() && v.keys[i] == "enclosures") continue;
+      walk(v.items[i], v.is(case_format::JsonValue::Type::object) ? (path.empty() ? "" : path + ".") + v.keys[i]
                                                          : path + "[" + std::to_string(i) + "]");
     }
   };
@@ -198,8 +198,8 @@ TEST_CASE("certified precision names are checked, and the text prints only certi
   CHECK(text.out.find("Decisions (ball arithmetic at 256 bits") != std::string::npos);
   // Figure 8's K is well conditioned: at 256 bits P_n has the 17 digits asked for, which are the
   // 100-digit solve's rounded to 17.
-  const io::JsonValue ref = solve_json({kFig8, "--precision", "100", "--strategy", "pc-crash:mu=0.4"});
-  const rational P_n = io::scalar_from_text<rational>(at(at(at(ref, "results").items.at(0), "impulse"), "contact").items.at(0).text);
+  const case_format::JsonValue ref = solve_json({kFig8, "--precision", "100", "--strategy", "pc-crash:mu=0.4"});
+  const rational P_n = case_format::scalar_from_text<rational>(at(at(at(ref, "results").items.at(0), "impulse"), "contact").items.at(0).text);
   using boost::multiprecision::cpp_int;
   const cpp_int scale = boost::multiprecision::pow(cpp_int(10), 12);  // P_n is 12519.3...: 5 + 12 digits
   const rational rounded = rational(floor_of(rational(P_n * rational(scale) + rational(1, 2)))) / rational(scale);

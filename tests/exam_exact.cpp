@@ -15,8 +15,8 @@
 //    triangle).
 #include <catch2/catch.hpp>
 
-#include "impact3d/numeric/exact_analysis.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/mechanics/exact_analysis.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
 #include "support.hpp"
 
 using namespace impact3d;
@@ -28,27 +28,27 @@ namespace {
 const char* kRational[] = {"planar_right_angle.json", "restitution_zero.json", "restitution_one.json",
                            "hard_lever_arms_near_zero.json", "exact_rational_rotations.json"};
 
-io::CaseSpec case_spec(const std::string& name) {
+case_format::CaseSpec case_spec(const std::string& name) {
   return load_spec(std::string(IMPACT3D_CASES_DIR) + "/" + name);
 }
 
 }  // namespace
 
 TEST_CASE("decimal text converts to the exact fraction it denotes", "[exact]") {
-  CHECK(io::scalar_from_text<rational>("0.1") == rational(1) / 10);
-  CHECK(io::scalar_from_text<rational>("-0.90") == rational(-9) / 10);
-  CHECK(io::scalar_from_text<rational>("1.5e-3") == rational(3) / 2000);
-  CHECK(io::scalar_from_text<rational>("25E2") == rational(2500));
-  CHECK(io::scalar_from_text<rational>("007") == rational(7));
+  CHECK(case_format::scalar_from_text<rational>("0.1") == rational(1) / 10);
+  CHECK(case_format::scalar_from_text<rational>("-0.90") == rational(-9) / 10);
+  CHECK(case_format::scalar_from_text<rational>("1.5e-3") == rational(3) / 2000);
+  CHECK(case_format::scalar_from_text<rational>("25E2") == rational(2500));
+  CHECK(case_format::scalar_from_text<rational>("007") == rational(7));
 }
 
 TEST_CASE("exact solutions satisfy their constraints with no rounding", "[exact]") {
   for (const char* name : kRational) {
     INFO(name);
-    const io::CaseSpec c = case_spec(name);
-    const Scene<rational> s = io::to_scene<rational>(c);
+    const case_format::CaseSpec c = case_spec(name);
+    const Scene<rational> s = case_format::to_scene<rational>(c);
     for (Engine engine : {Engine::generated, Engine::direct}) {
-      const ExactAnalysis x = exact_analyze(s, io::to_strategies<rational>(c), engine);
+      const ExactAnalysis x = exact_analyze(s, case_format::to_strategies<rational>(c), engine);
       int rational_results = 0;
       for (std::size_t k = 0; k < x.results.size(); ++k) {
         if (!x.results[k].solution) continue;
@@ -62,7 +62,7 @@ TEST_CASE("exact solutions satisfy their constraints with no rounding", "[exact]
         // V_rf = V_ri - K P / m' (eq 9), exactly, from the states.
         CHECK(r.V_rf == Vec3<rational>(x.V_ri - x.K * r.impulse.P_C / x.m_prime));
         const auto& st = c.strategies[k];
-        if (io::strategy_kind(st.kind).name == "brach") {
+        if (case_format::strategy_kind(st.kind).name == "brach") {
           if (!st.number("mu_t")) CHECK(r.V_rf.y() == 0);
           if (!st.number("mu_z")) CHECK(r.V_rf.z() == 0);
         }
@@ -70,7 +70,7 @@ TEST_CASE("exact solutions satisfy their constraints with no rounding", "[exact]
       }
       CHECK(rational_results > 0);
       // Both engines give the same fractions.
-      const ExactAnalysis other = exact_analyze(s, io::to_strategies<rational>(c), engine == Engine::generated ? Engine::direct : Engine::generated);
+      const ExactAnalysis other = exact_analyze(s, case_format::to_strategies<rational>(c), engine == Engine::generated ? Engine::direct : Engine::generated);
       for (std::size_t k = 0; k < x.results.size(); ++k) {
         REQUIRE(x.results[k].solution.has_value() == other.results[k].solution.has_value());
         if (x.results[k].solution) CHECK(x.results[k].solution->impulse.P_C == other.results[k].solution->impulse.P_C);
@@ -83,9 +83,9 @@ TEST_CASE("the 100-digit solve agrees with the exact one to 95 digits", "[exact]
   using F = mp::float100;
   for (const char* name : kRational) {
     INFO(name);
-    const io::CaseSpec c = case_spec(name);
-    const ExactAnalysis x = exact_analyze(io::to_scene<rational>(c), io::to_strategies<rational>(c));
-    const Analysis<F> a = analyze(io::to_scene<F>(c), io::to_strategies<F>(c));
+    const case_format::CaseSpec c = case_spec(name);
+    const ExactAnalysis x = exact_analyze(case_format::to_scene<rational>(c), case_format::to_strategies<rational>(c));
+    const Analysis<F> a = analyze(case_format::to_scene<F>(c), case_format::to_strategies<F>(c));
     int compared = 0;
     for (std::size_t k = 0; k < x.results.size(); ++k) {
       if (!x.results[k].solution) continue;  // not rational (a square root): nothing exact to hold it to
@@ -106,22 +106,22 @@ TEST_CASE("the 100-digit solve agrees with the exact one to 95 digits", "[exact]
 }
 
 TEST_CASE("what needs a square root or an angle is named, not approximated", "[exact]") {
-  const io::CaseSpec fig8 = load_spec(example("fig8_side_impact.json"));
-  const ExactAnalysis x = exact_analyze(io::to_scene<rational>(fig8), io::to_strategies<rational>(fig8));
+  const case_format::CaseSpec fig8 = load_spec(example("fig8_side_impact.json"));
+  const ExactAnalysis x = exact_analyze(case_format::to_scene<rational>(fig8), case_format::to_strategies<rational>(fig8));
   REQUIRE(x.results.size() == 4);
   CHECK(!x.results[0].solution);  // pc-crash: the phi_FI plane needs sqrt(P_t^2 + P_z^2)
   CHECK(x.results[0].not_rational.find("square root") != std::string::npos);
   CHECK(x.results[3].solution);  // brach with both ratios critical is rational
-  const io::CaseSpec oblique = load_spec(example("offset_frontal.json"));  // yaw 183 degrees
-  CHECK_THROWS_AS(io::to_scene<rational>(oblique), Irrational);
+  const case_format::CaseSpec oblique = load_spec(example("offset_frontal.json"));  // yaw 183 degrees
+  CHECK_THROWS_AS(case_format::to_scene<rational>(oblique), Irrational);
 }
 
 TEST_CASE("an orientation given as a matrix equals the same orientation given by angles", "[exact]") {
-  const io::CaseSpec c = case_spec("exact_rational_rotations.json");
-  io::CaseSpec d = c;
+  const case_format::CaseSpec c = case_spec("exact_rational_rotations.json");
+  case_format::CaseSpec d = c;
   // The matrix [[0.8, -0.6, 0], [0.6, 0.8, 0], [0, 0, 1]] is a yaw of atan2(0.6, 0.8).
   d.vehicles[0].orientation_matrix.reset();
-  d.vehicles[0].yaw = io::Number{io::scalar_to_text(std::atan2(0.6, 0.8) * 180 / M_PI), std::atan2(0.6, 0.8) * 180 / M_PI};
-  const Scene<double> a = io::to_scene<double>(c), b = io::to_scene<double>(d);
+  d.vehicles[0].yaw = case_format::Number{case_format::scalar_to_text(std::atan2(0.6, 0.8) * 180 / M_PI), std::atan2(0.6, 0.8) * 180 / M_PI};
+  const Scene<double> a = case_format::to_scene<double>(c), b = case_format::to_scene<double>(d);
   CHECK((a.body[0].R_WB - b.body[0].R_WB).cwiseAbs().maxCoeff() <= 4 * eps);
 }

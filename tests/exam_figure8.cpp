@@ -26,8 +26,8 @@ const double mph = 0.44704;  // exact, by definition
 }
 
 TEST_CASE("Figure 8: mu = 1.0 is a Full Impact that reverses the t sliding", "[figure8]") {
-  const io::CaseSpec c = load_spec(example("fig8_side_impact.json"));
-  const auto a = analyze(io::to_scene<double>(c), {PcCrash<double>{1.0}, PcCrash<double>{0.4}});
+  const case_format::CaseSpec c = load_spec(example("fig8_side_impact.json"));
+  const auto a = analyze(case_format::to_scene<double>(c), {PcCrash<double>{1.0}, PcCrash<double>{0.4}});
   // The initial sliding is 25 mph along +t (rearward on the Malibu), with no vertical component: the
   // Suburban's 11.176 m/s along world y is the t axis (normal yaw 90 degrees). A difference of two point
   // velocities of 11 m/s, each a few roundings: 4 eps.
@@ -40,14 +40,14 @@ TEST_CASE("Figure 8: mu = 1.0 is a Full Impact that reverses the t sliding", "[f
   CHECK(full.volume == "B");
   // By hand: -e V_rti = -0.1 * 25 mph = -2.5 mph, exactly in the equations; a solve of condition kappa
   // and point velocities of size velocity_scale leave 16 eps kappa of that scale.
-  CHECK(std::abs(full.V_rf.y() - (-0.1 * 25 * mph)) <= rounding::velocity_roundoff(io::to_scene<double>(c), a.kappa));
+  CHECK(std::abs(full.V_rf.y() - (-0.1 * 25 * mph)) <= rounding::velocity_roundoff(case_format::to_scene<double>(c), a.kappa));
   // Paper: -2.2 mph after (Virtual CRASH's own vehicle data), within 1 mph.
   CHECK(std::abs(full.V_rf.y() / mph - (-2.2)) < 1.0);
 }
 
 TEST_CASE("Figure 8: mu = 0.4 is a Sliding Impact with continued t sliding and swerve", "[figure8]") {
-  const io::CaseSpec c = load_spec(example("fig8_side_impact.json"));
-  const auto a = analyze(io::to_scene<double>(c), {PcCrash<double>{1.0}, PcCrash<double>{0.4}});
+  const case_format::CaseSpec c = load_spec(example("fig8_side_impact.json"));
+  const auto a = analyze(case_format::to_scene<double>(c), {PcCrash<double>{1.0}, PcCrash<double>{0.4}});
   const auto& slide = a.solutions[1];
   CHECK(slide.impulse.regime == Regime::sliding);  // paper: mu = 0.4 < GIR (0.4787 here, docs/solve-and-report.md)
   CHECK(slide.t_change == AxisChange::continued);
@@ -71,8 +71,8 @@ TEST_CASE("Figure 8: Wach's plane is horizontal here and cannot reach the Full I
   // P_z = 0 exactly. The Full Impact has P_z != 0 (above), so phi_FI != 0: no mu on Wach's plane reaches
   // it. And at Wach's CIR the t sliding stops but eq 23's z row, m' (V_rzf - V_rzi) = -(a3 + b3 mu) P_n
   // with a3 = 0.138 and b3 = 0.054 here (verification/reference/fig8_side_impact.json), leaves a swerve.
-  const io::CaseSpec c = load_spec(example("fig8_side_impact.json"));
-  const auto a = analyze(io::to_scene<double>(c), {Wach<double>{100.0, WachLimit::cir}, PcCrash<double>{100.0}});
+  const case_format::CaseSpec c = load_spec(example("fig8_side_impact.json"));
+  const auto a = analyze(case_format::to_scene<double>(c), {Wach<double>{100.0, WachLimit::cir}, PcCrash<double>{100.0}});
   const auto& wach = a.solutions[0];
   CHECK(*wach.impulse.plane_angle_deg == 0.0);
   CHECK(wach.impulse.P_C.z() == 0.0);

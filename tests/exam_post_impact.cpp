@@ -69,8 +69,8 @@ TEST_CASE("sliding along an axis: none, started, continued, stopped, reversed", 
 }
 
 TEST_CASE("a pulling contact and an energy gain are computed and flagged", "[warnings]") {
-  const io::CaseSpec c = load_spec(example("fig8_side_impact.json"));
-  const Scene<double> s = io::to_scene<double>(c);
+  const case_format::CaseSpec c = load_spec(example("fig8_side_impact.json"));
+  const Scene<double> s = case_format::to_scene<double>(c);
   // By hand from the example's K (verification/reference/fig8_side_impact.json): a1 = 1.0583 and
   // b1 = -0.1986, so a1 + mu_t b1 = -0.928 < 0 for mu_t = 10, and eq 24 gives P_n < 0.
   const auto pull = solve_one(s, Brach<double>{10.0, 0.0});
@@ -88,5 +88,5 @@ TEST_CASE("a pulling contact and an energy gain are computed and flagged", "[war
   CHECK(push.energy_loss < 0);
   CHECK(has(push, WarningCode::energy_gained));
   // And none of the example's own solutions is flagged.
-  for (const auto& sol : analyze(s, io::to_strategies<double>(c)).solutions) CHECK(sol.warnings.empty());
+  for (const auto& sol : analyze(s, case_format::to_strategies<double>(c)).solutions) CHECK(sol.warnings.empty());
 }

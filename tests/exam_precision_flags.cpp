@@ -10,9 +10,9 @@
 // singular); at 50 digits (eps 5e-51) it is 7e-23 and at 100 digits smaller still: no warning.
 #include <catch2/catch.hpp>
 
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
-#include "impact3d/numeric/precision_warnings.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
+#include "impact3d/mechanics/precision_warnings.hpp"
 
 using namespace impact3d;
 
@@ -33,21 +33,21 @@ TEST_CASE("the issue's tensor: every precision short of 50 digits flags it or re
       {"mass": 2600, "inertia": {"Ixx": 1100, "Iyy": 5600, "Izz": 5900}, "orientation_deg": {"yaw": 90},
        "velocity": [11.176, 0, 0], "impulse_center": [2.60, 0.20, -0.15]}],
     "contact": {"normal_yaw_deg": 0}, "restitution": 0.1, "strategy": {"name": "pc-crash", "mu": 0.4}})";
-  const io::CaseSpec spec = io::read_case(text);
+  const case_format::CaseSpec spec = case_format::read_case(text);
   for (Engine engine : {Engine::generated, Engine::direct}) {
     INFO(engine_name(engine) << " engine");
     try {
-      const auto a = analyze(io::to_scene<double>(spec), io::to_strategies<double>(spec), engine);
+      const auto a = analyze(case_format::to_scene<double>(spec), case_format::to_strategies<double>(spec), engine);
       CHECK(has(a.solutions[0].warnings, WarningCode::rounding));
     } catch (const SolveError&) {
     }
-    const auto ld = analyze(io::to_scene<long double>(spec), io::to_strategies<long double>(spec), engine);
+    const auto ld = analyze(case_format::to_scene<long double>(spec), case_format::to_strategies<long double>(spec), engine);
     CHECK(has(ld.solutions[0].warnings, WarningCode::rounding));
-    const auto quad = analyze(io::to_scene<mp::float128>(spec), io::to_strategies<mp::float128>(spec), engine);
+    const auto quad = analyze(case_format::to_scene<mp::float128>(spec), case_format::to_strategies<mp::float128>(spec), engine);
     CHECK(has(quad.solutions[0].warnings, WarningCode::rounding));
-    const auto f50 = analyze(io::to_scene<mp::float50>(spec), io::to_strategies<mp::float50>(spec), engine);
+    const auto f50 = analyze(case_format::to_scene<mp::float50>(spec), case_format::to_strategies<mp::float50>(spec), engine);
     CHECK(f50.solutions[0].warnings.empty());
-    const auto wide = analyze(io::to_scene<mp::float100>(spec), io::to_strategies<mp::float100>(spec), engine);
+    const auto wide = analyze(case_format::to_scene<mp::float100>(spec), case_format::to_strategies<mp::float100>(spec), engine);
     CHECK(wide.solutions[0].warnings.empty());
   }
 }

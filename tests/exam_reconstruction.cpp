@@ -6,9 +6,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/render.hpp"
-#include "impact3d/io/to_scene.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/studies/precision.hpp"
+#include "impact3d/case_format/to_scene.hpp"
 #include "support.hpp"
 
 using namespace impact3d;
@@ -31,8 +31,8 @@ std::string central_case(const std::string& split = "") {
 }
 
 Solution<double> central_solution(const std::string& split = "") {
-  const io::CaseSpec spec = io::read_case(central_case(split));
-  return analyze(io::to_scene<double>(spec), io::to_strategies<double>(spec)).solutions.at(0);
+  const case_format::CaseSpec spec = case_format::read_case(central_case(split));
+  return analyze(case_format::to_scene<double>(spec), case_format::to_strategies<double>(spec)).solutions.at(0);
 }
 
 // The rounding of a few operations on numbers of size 10: eps-level, 8 eps relative (rounding.hpp's
@@ -80,7 +80,7 @@ TEST_CASE("EES under each split rule, by hand", "[reconstruction][ees]") {
     CHECK(std::abs(*s.deformation.ees[1] - std::sqrt(12.5)) <= 16 * eps * 7);
   }
   // Unequal masses by default: E_1 : E_2 = m_2 : m_1, so m_1 EES_1 = m_2 EES_2 (each sqrt(2 m' loss)).
-  const Scene<double> fig8 = io::to_scene<double>(load_spec(example("fig8_side_impact.json")));
+  const Scene<double> fig8 = case_format::to_scene<double>(load_spec(example("fig8_side_impact.json")));
   const Analysis<double> a = analyze(fig8, every_strategy(0.4));
   const auto& b = fig8.body;
   for (const auto& s : a.solutions) {
@@ -94,8 +94,8 @@ TEST_CASE("EES under each split rule, by hand", "[reconstruction][ees]") {
 TEST_CASE("energy_split is read strictly", "[reconstruction][ees]") {
   const auto refused = [](const std::string& split) {
     try {
-      (void)io::read_case(central_case(split));
-    } catch (const io::CaseError& e) {
+      (void)case_format::read_case(central_case(split));
+    } catch (const case_format::CaseError& e) {
       return e.line();
     }
     return std::string("accepted");
@@ -114,8 +114,8 @@ TEST_CASE("a Full Impact that reverses the sliding is a reversal, not a 180-degr
   // Figure 8 at mu = 1.0 (above the GIR): the Full Impact ends the sliding at eps = 0 and, with
   // restitution, turns it back along the line it came (the paper's eqs 10-12 scale the tangential
   // relative velocity by -eps).
-  const io::CaseSpec spec = load_spec(example("fig8_side_impact.json"));
-  const Analysis<double> a = analyze(io::to_scene<double>(spec), io::to_strategies<double>(spec));
+  const case_format::CaseSpec spec = load_spec(example("fig8_side_impact.json"));
+  const Analysis<double> a = analyze(case_format::to_scene<double>(spec), case_format::to_strategies<double>(spec));
   const auto& full = a.solutions.at(0);
   REQUIRE(full.impulse.regime == Regime::full);
   REQUIRE(full.reversed);
@@ -156,12 +156,12 @@ TEST_CASE("momentum: the balance holds within its bound, and a disturbed state i
 }
 
 TEST_CASE("output units: km/h and mph from an SI case, SI from a US case", "[reconstruction][units]") {
-  const io::CaseSpec si = io::read_case(central_case());
-  const auto json_in = [&](const io::CaseSpec& spec, std::optional<Units> u) {
-    io::RenderOptions o;
+  const case_format::CaseSpec si = case_format::read_case(central_case());
+  const auto json_in = [&](const case_format::CaseSpec& spec, std::optional<Units> u) {
+    case_format::RenderOptions o;
     o.format = "json";
     o.units = u;
-    return nlohmann::json::parse(io::render(spec, "double", o));
+    return nlohmann::json::parse(studies::render(spec, "double", o));
   };
   const auto kmh = json_in(si, Units::metric_kmh);
   CHECK(kmh["units"] == "metric-kmh");
@@ -174,7 +174,7 @@ TEST_CASE("output units: km/h and mph from an SI case, SI from a US case", "[rec
   const double loss_ftlbf = us["results"][0]["energy"]["loss"];
   CHECK(std::abs(loss_ftlbf - 25000 / (0.3048 * 0.45359237 * 9.80665)) <= 16 * eps * 2e4);
   // The other way: the US example written in SI equals its US numbers times the exact factors.
-  const io::CaseSpec usc = load_spec(example("us_pickup_into_sedan.json"));
+  const case_format::CaseSpec usc = load_spec(example("us_pickup_into_sedan.json"));
   const auto in_us = json_in(usc, std::nullopt), in_si = json_in(usc, Units::SI);
   CHECK(in_si["units"] == "SI");
   int compared = 0;

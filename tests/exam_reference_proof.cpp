@@ -7,12 +7,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "impact3d/io/number_literals.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/render.hpp"
-#include "impact3d/io/result_json.hpp"
-#include "impact3d/io/to_scene.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/case_format/number_literals.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/studies/precision.hpp"
+#include "impact3d/case_format/result_json.hpp"
+#include "impact3d/case_format/to_scene.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
 #include "impact3d/verification/reference_proof.hpp"
 
 using namespace impact3d;
@@ -22,21 +22,21 @@ namespace {
 const std::string kCase = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
 
 struct Fixture {
-  explicit Fixture(const std::string& path = kCase) : spec(io::read_case(io::read_text_file(path))) {}
-  io::CaseSpec spec;
+  explicit Fixture(const std::string& path = kCase) : spec(case_format::read_case(case_format::read_text_file(path))) {}
+  case_format::CaseSpec spec;
   Analysis<mp::float100> analysis =
-      analyze(io::to_scene<mp::float100>(spec), io::to_strategies<mp::float100>(spec), Engine::generated);
+      analyze(case_format::to_scene<mp::float100>(spec), case_format::to_strategies<mp::float100>(spec), Engine::generated);
   std::string certified = [&] {
-    io::RenderOptions o;
+    case_format::RenderOptions o;
     o.format = "json";
-    return io::render(spec, "certified", o);
+    return studies::render(spec, "certified", o);
   }();
 
   // The reference as the generator writes it, with `edit` applied to its text.
   verification::ReferenceProof prove(const std::function<void(std::string&)>& edit = {}) const {
     return verification::prove_reference(
         [&](const auto& extra, const auto& per_result) {
-          std::string text = io::result_json(spec, analysis, "100", 40, true, extra, false, nullptr, per_result);
+          std::string text = case_format::result_json(spec, analysis, "100", 40, true, extra, false, nullptr, per_result);
           if (edit) edit(text);
           return text;
         },
@@ -46,7 +46,7 @@ struct Fixture {
 
 // The literal at `path` of `text` with its last digit moved by one.
 void nudge(std::string& text, const std::string& path) {
-  for (const auto& n : io::number_literals(text))
+  for (const auto& n : case_format::number_literals(text))
     if (n.path == path) {
       // The last digit of the significand, before any exponent.
       const std::size_t e = text.find_first_of("eE", n.begin);
@@ -71,9 +71,9 @@ TEST_CASE("the committed Figure 8 reference is every digit proven, as the proof 
   CHECK(proof.document == committed.str());
   // Rounding noise of the 100-digit solve (a conserved momentum's components that are exactly 0) is
   // written 0, and the rest of the numbers are those of the 100-digit solve.
-  const std::string raw = io::result_json(f.spec, f.analysis, "100", 40, true);
+  const std::string raw = case_format::result_json(f.spec, f.analysis, "100", 40, true);
   std::size_t zeroed = 0, numbers = 0;
-  const auto before = io::number_literals(raw), after = io::number_literals(proof.document);
+  const auto before = case_format::number_literals(raw), after = case_format::number_literals(proof.document);
   for (std::size_t i = 0; i < before.size(); ++i) {
     const std::string a = raw.substr(before[i].begin, before[i].end - before[i].begin);
     const std::string b = proof.document.substr(after[i].begin, after[i].end - after[i].begin);

@@ -1,16 +1,16 @@
-// The uncertainty file reader (io/read_uncertainty.hpp) on named answers: the example of
+// The uncertainty file reader (case_format/read_uncertainty.hpp) on named answers: the example of
 // many-cases.md ("montecarlo") read into the distributions it spells, and bad files each refused with
 // the one-line message written here, naming the JSON path of the field.
 #include <string>
 
 #include <catch2/catch.hpp>
 
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/read_uncertainty.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/case_format/read_uncertainty.hpp"
 
 namespace {
 
-using namespace impact3d::io;
+using namespace impact3d::case_format;
 using Kind = impact3d::uncertainty::Distribution::Kind;
 
 std::string refusal(const std::string& text) {

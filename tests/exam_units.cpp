@@ -20,12 +20,12 @@ namespace {
 const double lb = 0.45359237, ft = 0.3048, mph = 0.44704, g0 = 9.80665;  // exact definitions (see above)
 const double lbf = lb * g0, slug_ft2 = lbf * ft, deg = M_PI / 180;
 
-void convert(io::Number& n, double factor) {
+void convert(case_format::Number& n, double factor) {
   n.value *= factor;
-  n.text = io::scalar_to_text(n.value);
+  n.text = case_format::scalar_to_text(n.value);
 }
 
-io::CaseSpec si_twin(io::CaseSpec c) {
+case_format::CaseSpec si_twin(case_format::CaseSpec c) {
   c.units = Units::SI;
   for (auto& v : c.vehicles) {
     convert(v.mass, lb);
@@ -41,11 +41,11 @@ io::CaseSpec si_twin(io::CaseSpec c) {
 }  // namespace
 
 TEST_CASE("the US example and its SI twin give the same physics and consistent output", "[units]") {
-  const io::CaseSpec us = load_spec(example("us_pickup_into_sedan.json"));
+  const case_format::CaseSpec us = load_spec(example("us_pickup_into_sedan.json"));
   REQUIRE(us.units == Units::US);
-  const io::CaseSpec si = si_twin(us);
-  const auto a = analyze(io::to_scene<double>(us), io::to_strategies<double>(us));
-  const auto b = analyze(io::to_scene<double>(si), io::to_strategies<double>(si));
+  const case_format::CaseSpec si = si_twin(us);
+  const auto a = analyze(case_format::to_scene<double>(us), case_format::to_strategies<double>(us));
+  const auto b = analyze(case_format::to_scene<double>(si), case_format::to_strategies<double>(si));
   // Each converted input is rounded once (here and in the library, in different orders), so inputs
   // differ by an eps or two; results move by that times kappa(K) and a few roundings more.
   const double tol = rounding::agreement_bound(a.kappa);
@@ -57,9 +57,9 @@ TEST_CASE("the US example and its SI twin give the same physics and consistent o
 
   // Output in the case's units: lbf s, mph, deg/s, ft lbf. Velocities are compared against the scale of
   // the collision's point velocities (m/s), angular velocities absolutely (rad/s, below 1 here).
-  const double speed = velocity_scale(io::to_scene<double>(si));
-  const auto ju = nlohmann::json::parse(io::result_json(us, a, "double"));
-  const auto js = nlohmann::json::parse(io::result_json(si, b, "double"));
+  const double speed = velocity_scale(case_format::to_scene<double>(si));
+  const auto ju = nlohmann::json::parse(case_format::result_json(us, a, "double"));
+  const auto js = nlohmann::json::parse(case_format::result_json(si, b, "double"));
   CHECK(ju["units"] == "US");
   for (std::size_t k = 0; k < a.solutions.size(); ++k) {
     const auto &ru = ju["results"][k], &rs = js["results"][k];

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
 
 namespace {
 

@@ -8,8 +8,8 @@
 #include <sstream>
 #include <string>
 
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/numeric/analysis.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/mechanics/analysis.hpp"
 
 namespace impact3d::test {
 
@@ -26,7 +26,7 @@ inline std::string read_text(const std::string& path) {
 
 inline std::string example(const std::string& name) { return std::string(IMPACT3D_EXAMPLES_DIR) + "/" + name; }
 
-inline io::CaseSpec load_spec(const std::string& path) { return io::read_case(read_text(path)); }
+inline case_format::CaseSpec load_spec(const std::string& path) { return case_format::read_case(read_text(path)); }
 
 struct Range {
   double lo, hi;

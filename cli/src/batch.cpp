@@ -32,19 +32,19 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/io/escape.hpp"
-#include "impact3d/io/json_tree.hpp"
-#include "impact3d/io/json_writer.hpp"
-#include "impact3d/io/limits.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/render.hpp"
-#include "impact3d/io/result_csv.hpp"
-#include "impact3d/io/strategy_option.hpp"
-#include "batch_csv.hpp"
-#include "helper_thread.hpp"
-#include "output_file.hpp"
-#include "row_output.hpp"
-#include "user_error.hpp"
+#include "impact3d/case_format/escape.hpp"
+#include "impact3d/case_format/json_tree.hpp"
+#include "impact3d/case_format/json_writer.hpp"
+#include "impact3d/case_format/limits.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/studies/precision.hpp"
+#include "impact3d/case_format/result_csv.hpp"
+#include "impact3d/case_format/strategy_option.hpp"
+#include "impact3d/cli/batch_csv.hpp"
+#include "impact3d/cli/helper_thread.hpp"
+#include "impact3d/cli/output_file.hpp"
+#include "impact3d/cli/row_output.hpp"
+#include "impact3d/cli/user_error.hpp"
 
 namespace impact3d::cli {
 
@@ -106,7 +106,7 @@ class LineReader {
         const char* start = buf_ + pos_;
         const void* nl = std::memchr(start, '\n', len_ - pos_);
         const std::size_t n = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - start) : len_ - pos_;
-        if (!too_long && text.size() + n > io::limits::kCaseFileBytes) too_long = true, text.clear(), text.shrink_to_fit();
+        if (!too_long && text.size() + n > case_format::limits::kCaseFileBytes) too_long = true, text.clear(), text.shrink_to_fit();
         if (!too_long) text.append(start, n);
         pos_ += n;
         if (nl) {
@@ -159,7 +159,7 @@ class LineReader {
 };
 
 std::string error_record(long line, const std::string& problem) {
-  return fmt::format("{{\"line\": {}, \"error\": {}}}\n", line, io::JsonWriter::quote(io::printable(problem)));
+  return fmt::format("{{\"line\": {}, \"error\": {}}}\n", line, case_format::JsonWriter::quote(case_format::printable(problem)));
 }
 
 // A row's output: `head`, then `text` from byte `from`. A JSON Lines result is its document with
@@ -189,33 +189,33 @@ struct Formats {
 };
 
 std::string rejected_row(long line, const std::string& problem, const Formats& f) {
-  return f.csv_out ? io::result_csv_error(line, problem) : error_record(line, problem);
+  return f.csv_out ? case_format::result_csv_error(line, problem) : error_record(line, problem);
 }
 
 // The result document as the output wants it: one JSON line with "line" first, or CSV rows.
-Solved answer(const io::CaseSpec& spec, const BatchOptions& o, long line, const Formats& f) {
-  io::RenderOptions ro;
+Solved answer(const case_format::CaseSpec& spec, const BatchOptions& o, long line, const Formats& f) {
+  case_format::RenderOptions ro;
   ro.format = "jsonl";
   ro.engine = o.engine;
-  if (!f.csv_out) return with_line(io::render(spec, o.precision, ro), line);
+  if (!f.csv_out) return with_line(studies::render(spec, o.precision, ro), line);
   ro.format = "csv";
   ro.line = line;
-  return {io::render(spec, o.precision, ro), true};
+  return {studies::render(spec, o.precision, ro), true};
 }
 
-Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<io::StrategySpec>& strategies, const Formats& f) {
+Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<case_format::StrategySpec>& strategies, const Formats& f) {
   if (row.too_long)
-    return {rejected_row(row.line, fmt::format("$: larger than {} bytes, the limit for this input", io::limits::kCaseFileBytes), f),
+    return {rejected_row(row.line, fmt::format("$: larger than {} bytes, the limit for this input", case_format::limits::kCaseFileBytes), f),
             false};
   try {
-    io::CaseSpec spec = f.columns ? f.columns->case_spec(row.text) : io::read_case(row.text);
+    case_format::CaseSpec spec = f.columns ? f.columns->case_spec(row.text) : case_format::read_case(row.text);
     if (!strategies.empty()) spec.strategies = strategies;
     try {
       return answer(spec, o, row.line, f);
     } catch (const SolveError& e) {
-      throw io::no_solution(spec, e);
+      throw case_format::no_solution(spec, e);
     }
-  } catch (const io::CaseError& e) {
+  } catch (const case_format::CaseError& e) {
     return {rejected_row(row.line, e.line(), f), false};
   } catch (const Irrational& e) {
     return {rejected_row(row.line, std::string("$: ") + e.what(), f), false};
@@ -280,11 +280,11 @@ class Progress {
 }  // namespace
 
 int batch(const BatchOptions& o) {
-  std::vector<io::StrategySpec> strategies;
-  if (o.strategies.size() > io::limits::kStrategies)
-    throw io::CaseError("--strategy", fmt::format("more than {} strategies", io::limits::kStrategies));
+  std::vector<case_format::StrategySpec> strategies;
+  if (o.strategies.size() > case_format::limits::kStrategies)
+    throw case_format::CaseError("--strategy", fmt::format("more than {} strategies", case_format::limits::kStrategies));
   for (std::size_t i = 0; i < o.strategies.size(); ++i)
-    strategies.push_back(io::read_strategy_option(o.strategies[i], static_cast<int>(i)));
+    strategies.push_back(case_format::read_strategy_option(o.strategies[i], static_cast<int>(i)));
   const unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
   // Every block allocates and frees the same few megabytes: kept by the allocator rather than handed
   // back to the system and faulted in again.
@@ -316,18 +316,18 @@ int batch(const BatchOptions& o) {
     Row header;
     if (reader.next(header)) {
       const std::string name = o.input == "-" ? "standard input" : o.input;
-      if (header.too_long) throw UserError(fmt::format("{}: the header is longer than {} bytes", name, io::limits::kCaseFileBytes));
+      if (header.too_long) throw UserError(fmt::format("{}: the header is longer than {} bytes", name, case_format::limits::kCaseFileBytes));
       try {
         columns.emplace(header.text);
-      } catch (const io::CaseError& e) {
-        throw io::CaseError(name + ": line " + std::to_string(header.line) + ": " + e.path, e.what());
+      } catch (const case_format::CaseError& e) {
+        throw case_format::CaseError(name + ": line " + std::to_string(header.line) + ": " + e.path, e.what());
       }
       formats.columns = &*columns;
     }
   }
   RowOutput output(out, file && file->replaces());
   if (formats.csv_out) {
-    const std::string header = io::result_csv_header();
+    const std::string header = case_format::result_csv_header();
     const iovec piece{const_cast<char*>(header.data()), header.size()};
     if (!output.write({&piece, 1})) output_lost = true;
   }

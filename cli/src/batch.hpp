@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "impact3d/numeric/problem.hpp"
+#include "impact3d/mechanics/problem.hpp"
 
 namespace impact3d::cli {
 

@@ -11,20 +11,20 @@
 
 #include <CLI/CLI.hpp>
 
-#include "impact3d/io/escape.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/read_uncertainty.hpp"
-#include "impact3d/io/render.hpp"
+#include "impact3d/case_format/escape.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/case_format/read_uncertainty.hpp"
+#include "impact3d/studies/precision.hpp"
 #include "impact3d/verification/compare.hpp"
 #include "impact3d/verification/verify.hpp"
 #include "batch.hpp"
 #include "montecarlo.hpp"
-#include "output_file.hpp"
-#include "plot.hpp"
+#include "impact3d/cli/output_file.hpp"
+#include "impact3d/cli/plot.hpp"
 #include "report.hpp"
 #include "reconstruct.hpp"
 #include "sensitivity.hpp"
-#include "user_error.hpp"
+#include "impact3d/cli/user_error.hpp"
 
 namespace {
 
@@ -36,7 +36,7 @@ constexpr int kUsage = 2;
 constexpr int kInternal = 3;
 
 int error_line(const std::string& text, int status) {
-  std::fprintf(stderr, "impact3d: error: %s\n", impact3d::io::printable(text).c_str());
+  std::fprintf(stderr, "impact3d: error: %s\n", impact3d::case_format::printable(text).c_str());
   return status;
 }
 
@@ -49,7 +49,7 @@ int guarded(const std::string& file, F&& body) {
   };
   try {
     return body();
-  } catch (const io::CaseError& e) {
+  } catch (const case_format::CaseError& e) {
     return error_line(in_file(e.line()), kBadInput);
   } catch (const SolveError& e) {
     return error_line(in_file(std::string("no solution: ") + e.what()), kBadInput);
@@ -66,11 +66,11 @@ int guarded(const std::string& file, F&& body) {
 
 // `body(spec)`, with a strategy that has no solution named by its path in the case ($.strategy[2]).
 template <typename F>
-auto naming_strategies(const impact3d::io::CaseSpec& spec, F&& body) {
+auto naming_strategies(const impact3d::case_format::CaseSpec& spec, F&& body) {
   try {
     return body();
   } catch (const impact3d::SolveError& e) {
-    throw impact3d::io::no_solution(spec, e);
+    throw impact3d::case_format::no_solution(spec, e);
   }
 }
 
@@ -101,18 +101,18 @@ std::string tolerance_problem(const std::string& text) {
 
 // The strategies of the case or the command line.
 int solve(const std::string& case_path, const std::vector<std::string>& strategies, const std::string& precision,
-          const impact3d::io::RenderOptions& options) {
+          const impact3d::case_format::RenderOptions& options) {
   using namespace impact3d;
   return guarded(case_path, [&] {
-    io::CaseSpec spec = io::read_case(io::read_text_file(case_path));
-    if (strategies.size() > io::limits::kStrategies)
-      throw io::CaseError("--strategy", fmt::format("more than {} strategies", io::limits::kStrategies));
+    case_format::CaseSpec spec = case_format::read_case(case_format::read_text_file(case_path));
+    if (strategies.size() > case_format::limits::kStrategies)
+      throw case_format::CaseError("--strategy", fmt::format("more than {} strategies", case_format::limits::kStrategies));
     if (!strategies.empty()) {
       spec.strategies.clear();
       for (std::size_t i = 0; i < strategies.size(); ++i)
-        spec.strategies.push_back(io::read_strategy_option(strategies[i], static_cast<int>(i)));
+        spec.strategies.push_back(case_format::read_strategy_option(strategies[i], static_cast<int>(i)));
     }
-    const std::string output = naming_strategies(spec, [&] { return io::render(spec, precision, options); });
+    const std::string output = naming_strategies(spec, [&] { return studies::render(spec, precision, options); });
     std::fwrite(output.data(), 1, output.size(), stdout);
     return 0;
   });
@@ -138,14 +138,14 @@ int main(int argc, char** argv) {
                         "precision holds; JSON always prints them all)")
       ->check(CLI::Range(1, 110));
   std::string precision_list;
-  for (const auto& name : impact3d::io::precision_names()) precision_list += name + ", ";
+  for (const auto& name : impact3d::studies::precision_names()) precision_list += name + ", ";
   solve_cmd->add_option("--precision", precision,
                         "arithmetic: " + precision_list +
                             "certified or certified:BITS (numbers name decimal digits; exact: fractions where the "
                             "result is rational, beside the 100-digit solve; certified: ball arithmetic that encloses "
                             "every result and decides every branch or says it cannot, BITS 16 to 8192, default 256 "
                             "and more while a decision is undecided)")
-      ->check([](const std::string& name) { return impact3d::io::precision_problem(name); });
+      ->check([](const std::string& name) { return impact3d::studies::precision_problem(name); });
   solve_cmd->add_option("--engine", engine,
                         "generated: closed forms derived by symbolic/ (default); direct: 3x3 solves of the constraints")
       ->check(CLI::IsMember({"generated", "direct"}));
@@ -166,7 +166,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "jsonl", "csv"}));
   batch_cmd->add_option("--strategy", bopt.strategies, "replace every case's strategies (as solve's --strategy)");
   batch_cmd->add_option("--precision", bopt.precision, "arithmetic, as solve's")
-      ->check(CLI::IsMember(impact3d::io::precision_names()));
+      ->check(CLI::IsMember(impact3d::studies::precision_names()));
   batch_cmd->add_option("--engine", batch_engine, "generated (default) or direct, as solve's")
       ->check(CLI::IsMember({"generated", "direct"}));
   auto* mc_cmd = app.add_subcommand("montecarlo", "solve a case for every sample of its uncertain inputs (contract: many-cases.md)");
@@ -179,9 +179,9 @@ int main(int argc, char** argv) {
   std::string mc_samples;
   mc_cmd->add_option("--samples", mc_samples, "replace the file's number of samples")->check([](const std::string& text) {
     const auto n = seed_of(text);
-    return n && *n >= 1 && *n <= impact3d::io::kMaxSamples
+    return n && *n >= 1 && *n <= impact3d::case_format::kMaxSamples
                ? std::string()
-               : fmt::format("must be a whole number from 1 to {}, in decimal digits", impact3d::io::kMaxSamples);
+               : fmt::format("must be a whole number from 1 to {}, in decimal digits", impact3d::case_format::kMaxSamples);
   });
   std::string mc_seed;
   mc_cmd->add_option("--seed", mc_seed, "replace the file's seed (0 to 2^64 - 1)")->check(seed_problem);
@@ -194,7 +194,7 @@ int main(int argc, char** argv) {
   mc_cmd->add_option("--scatter", scatter, "the two outputs of the scatter figure (default: both vehicles' delta_v_magnitude)")
       ->expected(2);
   mc_cmd->add_option("--strategy", mopt.strategies, "replace the case's strategies (as solve's --strategy)");
-  std::vector<std::string> mc_precisions = impact3d::io::precision_names();
+  std::vector<std::string> mc_precisions = impact3d::studies::precision_names();
   std::erase(mc_precisions, "exact");
   mc_cmd->add_option("--precision", mopt.precision, "arithmetic of each sample, as solve's (not exact)")
       ->check(CLI::IsMember(mc_precisions));
@@ -269,7 +269,7 @@ int main(int argc, char** argv) {
   report_cmd->add_option("case", ropt.case_path, "case file (JSON)")->required();
   report_cmd->add_option("-o,--output", ropt.out_file, "the HTML file to write")->required();
   report_cmd->add_option("--precision", ropt.precision, "arithmetic (default double)")
-      ->check(CLI::IsMember(impact3d::io::precision_names()));
+      ->check(CLI::IsMember(impact3d::studies::precision_names()));
   report_cmd->add_option("--digits", ropt.digits, "significant digits shown (default 10 at double)")->check(CLI::Range(1, 200));
   report_cmd->add_option("--units", report_units, "units shown: SI, US or metric-kmh (default: the case's)")
       ->check(CLI::IsMember({"SI", "US", "metric-kmh"}));
@@ -285,7 +285,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::string what = e.what();
     std::replace(what.begin(), what.end(), '\n', ' ');
-    std::fprintf(stderr, "impact3d: usage: %s (impact3d --help)\n", impact3d::io::printable(what).c_str());
+    std::fprintf(stderr, "impact3d: usage: %s (impact3d --help)\n", impact3d::case_format::printable(what).c_str());
     return kUsage;
   }
   if (report_cmd->parsed())
@@ -300,7 +300,7 @@ int main(int argc, char** argv) {
   if (plot_cmd->parsed())
     return guarded(plot_case, [&] {
       if (!plot_units.empty()) popt.units = impact3d::units_named(plot_units);
-      const auto spec = impact3d::io::read_case(impact3d::io::read_text_file(plot_case));
+      const auto spec = impact3d::case_format::read_case(impact3d::case_format::read_text_file(plot_case));
       const std::string written = naming_strategies(spec, [&] { return impact3d::cli::plot(spec, popt); });
       std::fputs(written.c_str(), stdout);
       return 0;
@@ -341,7 +341,7 @@ int main(int argc, char** argv) {
   }
   if (compare_cmd->parsed()) return guarded("", [&] { return impact3d::verification::compare(reference, other, copt); });
   if (digits == 0 && precision == "double") digits = 10;
-  impact3d::io::RenderOptions ro;
+  impact3d::case_format::RenderOptions ro;
   ro.format = format;
   ro.digits = digits;
   ro.engine = engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;

@@ -10,39 +10,39 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/io/limits.hpp"
-#include "impact3d/io/montecarlo.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/read_uncertainty.hpp"
-#include "impact3d/io/strategy_kinds.hpp"
-#include "impact3d/io/strategy_option.hpp"
-#include "impact3d/io/escape.hpp"
-#include "output_file.hpp"
-#include "user_error.hpp"
+#include "impact3d/case_format/limits.hpp"
+#include "impact3d/studies/montecarlo.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/case_format/read_uncertainty.hpp"
+#include "impact3d/case_format/strategy_kinds.hpp"
+#include "impact3d/case_format/strategy_option.hpp"
+#include "impact3d/case_format/escape.hpp"
+#include "impact3d/cli/output_file.hpp"
+#include "impact3d/cli/user_error.hpp"
 
 namespace impact3d::cli {
 
 int montecarlo(const MonteCarloCliOptions& o) {
-  io::MonteCarloOptions mo;
+  studies::MonteCarloOptions mo;
   mo.precision = o.precision;
   mo.engine = o.engine;
   mo.jobs = o.jobs;
-  if (o.strategies.size() > io::limits::kStrategies)
-    throw io::CaseError("--strategy", fmt::format("more than {} strategies", io::limits::kStrategies));
+  if (o.strategies.size() > case_format::limits::kStrategies)
+    throw case_format::CaseError("--strategy", fmt::format("more than {} strategies", case_format::limits::kStrategies));
   for (std::size_t i = 0; i < o.strategies.size(); ++i)
-    mo.strategies.push_back(io::read_strategy_option(o.strategies[i], static_cast<int>(i)));
+    mo.strategies.push_back(case_format::read_strategy_option(o.strategies[i], static_cast<int>(i)));
   // The case on its own first, so that its problems name it; then the uncertainty file's.
   std::string case_text;
   try {
-    case_text = io::read_text_file(o.case_path);
-    io::read_case(case_text);
-  } catch (const io::CaseError& e) {
+    case_text = case_format::read_text_file(o.case_path);
+    case_format::read_case(case_text);
+  } catch (const case_format::CaseError& e) {
     throw in_file(o.case_path, e);
   }
-  io::UncertaintySpec u;
+  case_format::UncertaintySpec u;
   try {
-    u = io::read_uncertainty(io::read_text_file(o.uncertainty_path));
-  } catch (const io::CaseError& e) {
+    u = case_format::read_uncertainty(case_format::read_text_file(o.uncertainty_path));
+  } catch (const case_format::CaseError& e) {
     throw in_file(o.uncertainty_path, e);
   }
   if (o.samples) u.samples = *o.samples;
@@ -71,29 +71,29 @@ int montecarlo(const MonteCarloCliOptions& o) {
       std::fprintf(stderr, "\rimpact3d: montecarlo: %llu of %llu samples, %.0f/s, %.0f s left   ",
                    static_cast<unsigned long long>(done), static_cast<unsigned long long>(u.samples), rate, left);
     };
-  io::MonteCarloRun run;
+  studies::MonteCarloRun run;
   try {
-    run = io::montecarlo(case_text, u, mo);
-  } catch (const io::CaseError& e) {
+    run = studies::montecarlo(case_text, u, mo);
+  } catch (const case_format::CaseError& e) {
     if (shown) std::fputs("\r\033[K", stderr);
-    if (o.samples && e.path == "$.samples") throw io::CaseError("--samples", e.what());
+    if (o.samples && e.path == "$.samples") throw case_format::CaseError("--samples", e.what());
     throw in_file(o.uncertainty_path, e);
   }
   if (shown) std::fputs("\r\033[K", stderr);
   // A summary of fewer than half the samples describes another population than the one asked for.
-  for (const io::StrategySummary& r : run.results)
+  for (const studies::StrategySummary& r : run.results)
     if (2 * r.solved < run.samples) {
       std::uint64_t most = 0;
       std::string why;
-      for (const io::Rejections& x : r.rejected)
+      for (const studies::Rejections& x : r.rejected)
         if (x.count > most) most = x.count, why = x.reason;
       std::fprintf(stderr, "impact3d: warning: montecarlo: %s solved %llu of %llu samples (the commonest rejection: %s, %llu): its summary describes only those\n",
-                   io::printable(io::strategy_label(r.strategy)).c_str(), static_cast<unsigned long long>(r.solved),
-                   static_cast<unsigned long long>(run.samples), io::printable(why).c_str(), static_cast<unsigned long long>(most));
+                   case_format::printable(case_format::strategy_label(r.strategy)).c_str(), static_cast<unsigned long long>(r.solved),
+                   static_cast<unsigned long long>(run.samples), case_format::printable(why).c_str(), static_cast<unsigned long long>(most));
     }
   if (samples_file) {
     int error = 0;
-    io::samples_csv(run, [&](std::string_view piece) {
+    studies::samples_csv(run, [&](std::string_view piece) {
       if (!error) error = write_all(samples_file->fd(), piece);
     });
     if (error)
@@ -106,7 +106,7 @@ int montecarlo(const MonteCarloCliOptions& o) {
     }
   }
   if (!o.plot.out_dir.empty()) montecarlo_plot(run, o.plot);
-  const std::string out = o.format == "json" ? io::montecarlo_json(run) : io::montecarlo_text(run);
+  const std::string out = o.format == "json" ? studies::montecarlo_json(run) : studies::montecarlo_text(run);
   std::fwrite(out.data(), 1, out.size(), stdout);
   return 0;
 }

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "impact3d/numeric/problem.hpp"
-#include "montecarlo_plot.hpp"
+#include "impact3d/mechanics/problem.hpp"
+#include "impact3d/cli/montecarlo_plot.hpp"
 
 namespace impact3d::cli {
 
@@ -24,7 +24,7 @@ struct MonteCarloCliOptions {
   Engine engine = Engine::generated;
 };
 
-// Writes the summary to standard output; returns the exit status (0). Throws io::CaseError naming the
+// Writes the summary to standard output; returns the exit status (0). Throws case_format::CaseError naming the
 // file and the JSON path of a bad input, UserError for an output that cannot be written.
 int montecarlo(const MonteCarloCliOptions& o);
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "impact3d/numeric/problem.hpp"
+#include "impact3d/mechanics/problem.hpp"
 
 namespace impact3d::cli {
 
@@ -17,7 +17,7 @@ struct ReconstructCliOptions {
   bool png = false;
 };
 
-// Writes the report to standard output; returns the exit status (0). Throws io::CaseError naming the
+// Writes the report to standard output; returns the exit status (0). Throws case_format::CaseError naming the
 // file (the case's or the evidence's) and the JSON path of a bad input.
 int reconstruct(const ReconstructCliOptions& o);
 

@@ -7,13 +7,13 @@
 
 #include <fmt/format.h>
 
-#include "gnuplot.hpp"
-#include "output_file.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/render.hpp"
-#include "impact3d/io/strategy_kinds.hpp"
-#include "plot.hpp"
-#include "user_error.hpp"
+#include "impact3d/cli/gnuplot.hpp"
+#include "impact3d/cli/output_file.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/studies/precision.hpp"
+#include "impact3d/case_format/strategy_kinds.hpp"
+#include "impact3d/cli/plot.hpp"
+#include "impact3d/cli/user_error.hpp"
 
 namespace impact3d::cli {
 namespace {
@@ -40,18 +40,18 @@ class ScratchDir {
   std::string path_;
 };
 
-std::string read_file(const fs::path& p) { return io::read_text_file(p.string()); }
+std::string read_file(const fs::path& p) { return case_format::read_text_file(p.string()); }
 
 // The figures in reading order: the collision, the paper's views, then the sweeps.
-std::vector<io::ReportFigure> figures_of(const io::CaseSpec& spec, const fs::path& dir) {
-  std::vector<io::ReportFigure> out;
+std::vector<case_format::ReportFigure> figures_of(const case_format::CaseSpec& spec, const fs::path& dir) {
+  std::vector<case_format::ReportFigure> out;
   const auto add = [&](const std::string& name, const std::string& caption) {
     const fs::path f = dir / (name + ".svg");
     if (fs::exists(f)) out.push_back({caption, read_file(f)});
   };
   const std::size_t n = spec.strategies.size();
   std::vector<std::string> label(n);
-  for (std::size_t k = 0; k < n; ++k) label[k] = io::strategy_label(spec.strategies[k]);
+  for (std::size_t k = 0; k < n; ++k) label[k] = case_format::strategy_label(spec.strategies[k]);
   for (std::size_t k = 0; k < n; ++k) add(fmt::format("collision_{}", k + 1), "The collision under " + label[k] + " (Figures 1 and 5)");
   add("contact_plane", "Contact-plane view on the restitution plane (Figures 3-4, right)");
   add("impulse_space", "Impulse space (Figures 2-3, left)");
@@ -64,10 +64,10 @@ std::vector<io::ReportFigure> figures_of(const io::CaseSpec& spec, const fs::pat
 }  // namespace
 
 std::string report(const ReportOptions& o) {
-  const io::CaseSpec spec = io::read_case(io::read_text_file(o.case_path));
+  const case_format::CaseSpec spec = case_format::read_case(case_format::read_text_file(o.case_path));
   // Opened before the work, so that none is lost to a path that cannot be written.
   OutputFile out(o.out_file);
-  std::vector<io::ReportFigure> figures;
+  std::vector<case_format::ReportFigure> figures;
   std::string note;
   if (!o.figures) {
     note = "Figures left out (--no-figures).";
@@ -89,14 +89,14 @@ std::string report(const ReportOptions& o) {
       figures = figures_of(spec, scratch.path());
     }
   }
-  io::RenderOptions r;
+  case_format::RenderOptions r;
   r.format = "html";
   r.digits = o.digits == 0 && o.precision == "double" ? 10 : o.digits;
   r.engine = o.engine;
   r.units = o.units;
   r.figures = &figures;
   r.figures_note = note;
-  const std::string page = io::render(spec, o.precision, r);
+  const std::string page = studies::render(spec, o.precision, r);
   out.write(page);
   out.commit();
   return o.out_file + "\n";

@@ -1,12 +1,12 @@
-// impact3d report: the case as one self-contained HTML page (io/report_html.hpp) with the figures of
+// impact3d report: the case as one self-contained HTML page (case_format/report_html.hpp) with the figures of
 // `plot` inlined.
 #pragma once
 
 #include <optional>
 #include <string>
 
-#include "impact3d/numeric/problem.hpp"
-#include "impact3d/numeric/units.hpp"
+#include "impact3d/mechanics/problem.hpp"
+#include "impact3d/mechanics/units.hpp"
 
 namespace impact3d::cli {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "impact3d/numeric/problem.hpp"
+#include "impact3d/mechanics/problem.hpp"
 
 namespace impact3d::cli {
 
@@ -18,7 +18,7 @@ struct SensitivityCliOptions {
   bool png = false;
 };
 
-// Writes the report to standard output; returns the exit status (0). Throws io::CaseError naming the
+// Writes the report to standard output; returns the exit status (0). Throws case_format::CaseError naming the
 // file and the JSON path of a bad input, UserError for a figure that cannot be written.
 int sensitivity(const SensitivityCliOptions& o);
 

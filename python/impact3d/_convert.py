@@ -48,7 +48,7 @@ class InputError(ValueError):
     """A value with no JSON form, at its JSON path."""
 
 
-# The case reader's nesting limit (io/limits.hpp, docs/limits-and-exit-status.md), checked before Python's own
+# The case reader's nesting limit (case_format/limits.hpp, docs/limits-and-exit-status.md), checked before Python's own
 # recursion limit is reached: a dict nested 100 000 deep, or one holding itself, is bad input.
 MAX_DEPTH = 32
 

@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/numeric/strategy.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/mechanics/strategy.hpp"
 
 namespace impact3d::python {
 
@@ -13,7 +13,7 @@ namespace impact3d::python {
 inline constexpr unsigned kMaxJobs = 1024;
 
 struct Case {
-  io::CaseSpec spec;   // read and checked
+  case_format::CaseSpec spec;   // read and checked
   std::string text;    // as read: montecarlo and sensitivity read it again
   std::string source;  // the file it came from, named first in messages; empty for a dict
 };
@@ -33,7 +33,7 @@ template <typename F>
 auto guarded(const std::string& source, F&& body) -> decltype(body()) {
   try {
     return body();
-  } catch (const io::CaseError& e) {
+  } catch (const case_format::CaseError& e) {
     throw InputError(cli_line(source, e.line()));
   } catch (const SolveError& e) {
     throw InputError(cli_line(source, std::string("no solution: ") + e.what()));

@@ -3,10 +3,10 @@
 #include <pybind11/stl.h>
 
 #include "case.hpp"
-#include "impact3d/io/montecarlo.hpp"
-#include "impact3d/io/render.hpp"
-#include "impact3d/numeric/lean.hpp"
-#include "impact3d/numeric/thread_caches.hpp"
+#include "impact3d/studies/montecarlo.hpp"
+#include "impact3d/studies/precision.hpp"
+#include "impact3d/mechanics/lean.hpp"
+#include "impact3d/scalar/thread_caches.hpp"
 #include "solve.hpp"
 #include "solve_batch.hpp"
 #include "reconstruct.hpp"
@@ -43,27 +43,27 @@ PYBIND11_MODULE(_impact3d, m) {
       .def_property_readonly("source", [](const Uncertainty& u) { return u.source; });
   m.def(
       "read_uncertainty_file",
-      [](const std::string& path) { return Uncertainty{guarded(path, [&] { return io::read_text_file(path); }), path}; },
+      [](const std::string& path) { return Uncertainty{guarded(path, [&] { return case_format::read_text_file(path); }), path}; },
       py::arg("path"), py::call_guard<py::gil_scoped_release>());
   m.def("montecarlo", &montecarlo, py::arg("case"), py::arg("uncertainty"), py::arg("strategies"), py::arg("precision"),
         py::arg("engine"), py::arg("jobs"), py::arg("samples"), py::arg("seed"), py::arg("keep_samples"));
   m.def("sensitivity_json", &sensitivity_json, py::arg("case"), py::arg("strategies"), py::arg("engine"),
         py::call_guard<py::gil_scoped_release>());
   m.def(
-      "read_input_file", [](const std::string& path) { return guarded(path, [&] { return io::read_text_file(path); }); },
+      "read_input_file", [](const std::string& path) { return guarded(path, [&] { return case_format::read_text_file(path); }); },
       py::arg("path"), py::call_guard<py::gil_scoped_release>());
   m.def("reconstruct_json", &reconstruct_json, py::arg("case"), py::arg("evidence_text"), py::arg("evidence_source"),
         py::arg("strategy"), py::arg("engine"), py::call_guard<py::gil_scoped_release>());
 
   py::list precisions;
-  for (const auto& p : io::precision_names()) precisions.append(p);
+  for (const auto& p : studies::precision_names()) precisions.append(p);
   m.attr("PRECISIONS") = py::tuple(precisions);
   py::list regimes, warnings;
-  for (const auto r : io::kRegimeNames) regimes.append(std::string(r));
-  for (const auto w : io::kWarningNames) warnings.append(std::string(w));
+  for (const auto r : studies::kRegimeNames) regimes.append(std::string(r));
+  for (const auto w : studies::kWarningNames) warnings.append(std::string(w));
   m.attr("REGIMES") = py::tuple(regimes);
   m.attr("WARNINGS") = py::tuple(warnings);
-  m.attr("MAX_SAMPLES") = io::kMaxSamples;  // the bounds the package checks its arguments by
+  m.attr("MAX_SAMPLES") = case_format::kMaxSamples;  // the bounds the package checks its arguments by
   m.attr("MAX_JOBS") = kMaxJobs;
   m.attr("STATUSES") = py::make_tuple(status_name(Status::solved), status_name(Status::not_approaching),
                                       status_name(Status::singular), "invalid");

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "case.hpp"
-#include "impact3d/numeric/problem.hpp"
+#include "impact3d/mechanics/problem.hpp"
 
 namespace impact3d::python {
 
@@ -21,6 +21,6 @@ std::string solve_json(const Case& c, const std::vector<std::string>& strategies
 Engine engine_named(const std::string& name);
 
 // The case's strategies replaced by `strategies` (as --strategy reads them), when any.
-void replace_strategies(io::CaseSpec& spec, const std::vector<std::string>& strategies);
+void replace_strategies(case_format::CaseSpec& spec, const std::vector<std::string>& strategies);
 
 }  // namespace impact3d::python

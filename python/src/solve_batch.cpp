@@ -20,10 +20,10 @@
 #include <pybind11/stl.h>
 
 #include "case.hpp"
-#include "impact3d/io/escape.hpp"
-#include "impact3d/io/limits.hpp"
-#include "impact3d/numeric/batch/columns.hpp"
-#include "impact3d/numeric/lean.hpp"
+#include "impact3d/case_format/escape.hpp"
+#include "impact3d/case_format/limits.hpp"
+#include "impact3d/mechanics/batch/columns.hpp"
+#include "impact3d/mechanics/lean.hpp"
 
 namespace py = pybind11;
 
@@ -59,12 +59,12 @@ StrategyChoice strategy_of(const std::string& name, const std::optional<std::str
   else if (name == "brach") kind = Kind::brach, c.name = "brach";
   else
     throw py::value_error(fmt::format("solve_batch: strategy {} is not one of \"pc-crash\", \"wach\", \"brach\"",
-                                      io::quoted(name)));
+                                      case_format::quoted(name)));
   if (limit) {
     if (kind != Kind::wach) throw py::value_error(fmt::format("solve_batch: limit is wach's, not {}'s", c.name));
     if (*limit == "cir") c.lanes.limit = WachLimit::cir;
     else if (*limit == "gir") c.lanes.limit = WachLimit::gir;
-    else throw py::value_error(fmt::format("solve_batch: limit {} is not \"cir\" or \"gir\"", io::quoted(*limit)));
+    else throw py::value_error(fmt::format("solve_batch: limit {} is not \"cir\" or \"gir\"", case_format::quoted(*limit)));
   }
   return c;
 }
@@ -99,7 +99,7 @@ class Columns {
               throw py::type_error(fmt::format("solve_batch: {} is not a column of {} (its ratios: {})", name,
                                                strategy.name, fmt::join(ratio_columns(strategy.lanes.kind), ", ")));
         throw py::type_error(fmt::format("solve_batch: no column {} (the columns are those of "
-                                         "impact3d.BATCH_COLUMNS)", io::quoted(name)));
+                                         "impact3d.BATCH_COLUMNS)", case_format::quoted(name)));
       }
       // Numbers only: NumPy would also cast strings, complex numbers, dates, None, and a masked array's
       // hidden values.
@@ -154,8 +154,8 @@ struct RowCheck {
   const double* lower[2][3];  // J10, J20, J21 of each vehicle, when given (else nullptr)
 
   std::string operator()(std::size_t i) const {
-    static const double kMax = std::strtod(io::limits::kMaxMagnitude, nullptr);
-    static const double kMin = std::strtod(io::limits::kMinMagnitude, nullptr);
+    static const double kMax = std::strtod(case_format::limits::kMaxMagnitude, nullptr);
+    static const double kMin = std::strtod(case_format::limits::kMinMagnitude, nullptr);
     for (const auto& [name, column] : named) {
       const double x = column[i];
       if (!std::isfinite(x)) return name + ": not a finite number";
@@ -325,7 +325,7 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities, cons
     for (int s = 0; s < 5; ++s) result[names[s]] = states[static_cast<std::size_t>(s)];
   }
   py::dict flagged;
-  for (const auto& [row, problem] : problems) flagged[py::int_(row)] = py::str(io::printable(problem));
+  for (const auto& [row, problem] : problems) flagged[py::int_(row)] = py::str(case_format::printable(problem));
   result["problems"] = flagged;
   return result;
 }

@@ -5,9 +5,9 @@
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
 
-#include "impact3d/io/montecarlo.hpp"
-#include "impact3d/io/read_uncertainty.hpp"
-#include "impact3d/io/sensitivity.hpp"
+#include "impact3d/studies/montecarlo.hpp"
+#include "impact3d/case_format/read_uncertainty.hpp"
+#include "impact3d/studies/sensitivity.hpp"
 #include "solve.hpp"
 
 namespace py = pybind11;
@@ -22,7 +22,7 @@ py::array_t<T> array_of(const T* data, std::size_t n) {
 
 // Every sample as arrays: each input by its path; per result its regime (kRegimeNames index, -1 not
 // solved), its rejection (0 none, r + 1 the reason r) and each output by its path.
-py::dict samples_of(const io::MonteCarloRun& run) {
+py::dict samples_of(const studies::MonteCarloRun& run) {
   const std::size_t n = run.samples, inputs = run.inputs.size();
   py::dict in;
   for (std::size_t j = 0; j < inputs; ++j) {
@@ -31,7 +31,7 @@ py::dict samples_of(const io::MonteCarloRun& run) {
     for (std::size_t i = 0; i < n; ++i) d[i] = run.inputs_of[i * inputs + j];
     in[py::str(run.inputs[j])] = a;
   }
-  const auto& outputs = io::monte_carlo_outputs();
+  const auto& outputs = case_format::monte_carlo_outputs();
   py::list results;
   for (std::size_t k = 0; k < run.results.size(); ++k) {
     py::dict r;
@@ -56,46 +56,46 @@ py::tuple montecarlo(const Case& c, const Uncertainty& u, const std::vector<std:
                      const std::string& precision, const std::string& engine, unsigned jobs,
                      std::optional<std::uint64_t> samples, std::optional<std::uint64_t> seed, bool keep) {
   // The CLI's bounds on --samples and --jobs, in its words.
-  if (samples && (*samples < 1 || *samples > io::kMaxSamples))
-    throw std::invalid_argument(fmt::format("samples: from 1 to {}, not {}", io::kMaxSamples, *samples));
+  if (samples && (*samples < 1 || *samples > case_format::kMaxSamples))
+    throw std::invalid_argument(fmt::format("samples: from 1 to {}, not {}", case_format::kMaxSamples, *samples));
   if (jobs > kMaxJobs) throw std::invalid_argument(fmt::format("jobs: at most {}, not {}", kMaxJobs, jobs));
-  io::MonteCarloOptions o;
+  studies::MonteCarloOptions o;
   o.precision = precision;
   o.engine = engine_named(engine);
   o.jobs = jobs;
   o.keep_samples = keep;
   if (!strategies.empty())
     guarded("", [&] {  // an option's problem, as the CLI names it: --strategy[i]
-      io::CaseSpec spec = c.spec;
+      case_format::CaseSpec spec = c.spec;
       replace_strategies(spec, strategies);
       o.strategies = spec.strategies;
     });
-  io::UncertaintySpec spec = guarded(u.source, [&] { return io::read_uncertainty(u.text); });
+  case_format::UncertaintySpec spec = guarded(u.source, [&] { return case_format::read_uncertainty(u.text); });
   if (samples) spec.samples = *samples;
   if (seed) spec.seed = *seed;
-  io::MonteCarloRun run;
+  studies::MonteCarloRun run;
   {
     py::gil_scoped_release released;
     run = guarded(u.source, [&] {
       try {
-        return io::montecarlo(c.text, spec, o);
-      } catch (const io::CaseError& e) {
-        if (samples && e.path == "$.samples") throw io::CaseError("--samples", e.what());
+        return studies::montecarlo(c.text, spec, o);
+      } catch (const case_format::CaseError& e) {
+        if (samples && e.path == "$.samples") throw case_format::CaseError("--samples", e.what());
         throw;
       }
     });
   }
-  return py::make_tuple(io::montecarlo_json(run), keep ? py::object(samples_of(run)) : py::object(py::none()));
+  return py::make_tuple(studies::montecarlo_json(run), keep ? py::object(samples_of(run)) : py::object(py::none()));
 }
 
 std::string sensitivity_json(const Case& c, const std::vector<std::string>& strategies, const std::string& engine) {
-  io::SensitivityOptions o;
+  studies::SensitivityOptions o;
   o.engine = engine_named(engine);
   return guarded(c.source, [&] {
-    io::CaseSpec spec = c.spec;
+    case_format::CaseSpec spec = c.spec;
     replace_strategies(spec, strategies);
     if (!strategies.empty()) o.strategies = spec.strategies;
-    return io::sensitivity_json(io::sensitivity(spec, o));
+    return studies::sensitivity_json(studies::sensitivity(spec, o));
   });
 }
 

@@ -1,4 +1,4 @@
-// The sensitivities' automatic differentiation (numeric/autodiff.hpp, Eigen's AutoDiffScalar through
+// The sensitivities' automatic differentiation (scalar/autodiff.hpp, Eigen's AutoDiffScalar through
 // make_problem and the engines) against GiNaC's symbolic derivatives of the derived closed forms: K of
 // eq 9 (masses through m' = m1 m2 / (m1 + m2), J^-1 as the symbolic inverse of the full tensor) and
 // the Full Impact of eqs 10-12, by a mass, an impulse-centre coordinate, a diagonal and an
@@ -12,8 +12,8 @@
 #include <random>
 
 #include "closed_forms.hpp"
-#include "impact3d/numeric/autodiff.hpp"
-#include "impact3d/numeric/analysis.hpp"
+#include "impact3d/scalar/autodiff.hpp"
+#include "impact3d/mechanics/analysis.hpp"
 #include "model.hpp"
 
 using namespace impact3d::symbolic;

@@ -11,10 +11,10 @@
 #include <string_view>
 #include <vector>
 
-#include "../../cli/src/batch_csv.hpp"
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/escape.hpp"
-#include "impact3d/io/json_tree.hpp"
+#include "impact3d/cli/batch_csv.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/case_format/escape.hpp"
+#include "impact3d/case_format/json_tree.hpp"
 #include "json_tree_equal.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::optional<cli::csv::CaseColumns> columns;
   try {
     columns.emplace(text.substr(0, nl));
-  } catch (const io::CaseError&) {
+  } catch (const case_format::CaseError&) {
     return 0;
   }
   std::string_view rest = nl == std::string_view::npos ? std::string_view() : text.substr(nl + 1);
@@ -36,31 +36,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::string json;
     try {
       json = columns->case_json(line);
-    } catch (const io::CaseError&) {
+    } catch (const case_format::CaseError&) {
       continue;
     }
     std::vector<cli::csv::Cell> cells;
     columns->cells_of(line, cells);  // case_json took the row: the same cells
     const bool built = columns->case_tree(cells, row);
-    const io::JsonValue& direct = row.tree();
-    io::JsonValue tree;
+    const case_format::JsonValue& direct = row.tree();
+    case_format::JsonValue tree;
     try {
-      tree = io::parse_json_tree(json);
-    } catch (const io::CaseError& e) {
+      tree = case_format::parse_json_tree(json);
+    } catch (const case_format::CaseError& e) {
       if (built) std::abort();  // the cells' tree where the text is refused
-      if (io::valid_utf8(std::string(line)) && std::string_view(e.what()).rfind("invalid JSON", 0) == 0) std::abort();
+      if (case_format::valid_utf8(std::string(line)) && std::string_view(e.what()).rfind("invalid JSON", 0) == 0) std::abort();
       continue;
     }
-    if (built && !io::json_tree_equal(direct, tree)) std::abort();
+    if (built && !case_format::json_tree_equal(direct, tree)) std::abort();
     std::string from_text, from_row;
     try {
-      (void)io::read_case_tree(tree);
-    } catch (const io::CaseError& e) {
+      (void)case_format::read_case_tree(tree);
+    } catch (const case_format::CaseError& e) {
       from_text = e.line();
     }
     try {
       (void)columns->case_spec(line);
-    } catch (const io::CaseError& e) {
+    } catch (const case_format::CaseError& e) {
       from_row = e.line();
     }
     if (from_text != from_row) std::abort();

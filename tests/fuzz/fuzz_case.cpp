@@ -11,26 +11,26 @@
 #include <cstring>
 #include <string>
 
-#include "impact3d/io/case_numbers.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/render.hpp"
-#include "impact3d/io/report_html.hpp"
-#include "impact3d/io/scalar_text.hpp"
-#include "impact3d/io/sensitivity.hpp"
-#include "impact3d/numeric/ball.hpp"
-#include "impact3d/numeric/exact_analysis.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
+#include "impact3d/case_format/case_numbers.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/studies/precision.hpp"
+#include "impact3d/case_format/report_html.hpp"
+#include "impact3d/case_format/scalar_text.hpp"
+#include "impact3d/studies/sensitivity.hpp"
+#include "impact3d/scalar/ball.hpp"
+#include "impact3d/mechanics/exact_analysis.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
 
 namespace {
 
 template <typename Scalar>
-void solve_at(const impact3d::io::CaseSpec& spec, impact3d::Engine engine) {
+void solve_at(const impact3d::case_format::CaseSpec& spec, impact3d::Engine engine) {
   using namespace impact3d;
   try {
-    const auto a = analyze(io::to_scene<Scalar>(spec), io::to_strategies<Scalar>(spec), engine);
-    (void)io::result_json(spec, a, "fuzz");
-    (void)io::report_html(spec, a, "fuzz", 10, {}, "");
-  } catch (const io::CaseError&) {
+    const auto a = analyze(case_format::to_scene<Scalar>(spec), case_format::to_strategies<Scalar>(spec), engine);
+    (void)case_format::result_json(spec, a, "fuzz");
+    (void)case_format::report_html(spec, a, "fuzz", 10, {}, "");
+  } catch (const case_format::CaseError&) {
   } catch (const SolveError&) {
   }
 }
@@ -39,15 +39,15 @@ void solve_at(const impact3d::io::CaseSpec& spec, impact3d::Engine engine) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace impact3d;
-  io::CaseSpec spec;
+  case_format::CaseSpec spec;
   try {
-    spec = io::read_case(std::string(reinterpret_cast<const char*>(data), size));
-  } catch (const io::CaseError&) {
+    spec = case_format::read_case(std::string(reinterpret_cast<const char*>(data), size));
+  } catch (const case_format::CaseError&) {
     return 0;
   }
-  for (const auto& input : io::case_inputs(spec).inputs)
-    for (const io::Number* n : input.numbers) {
-      const double x = io::scalar_from_text<double>(n->text);
+  for (const auto& input : case_format::case_inputs(spec).inputs)
+    for (const case_format::Number* n : input.numbers) {
+      const double x = case_format::scalar_from_text<double>(n->text);
       if (std::memcmp(&x, &n->value, sizeof x) != 0 && !(std::isnan(x) && std::isnan(n->value))) std::abort();
     }
   for (Engine engine : {Engine::generated, Engine::direct}) {
@@ -60,29 +60,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const std::string text(reinterpret_cast<const char*>(data), size);
     for (Engine engine : {Engine::generated, Engine::direct}) {
-      io::SensitivityOptions o;
+      studies::SensitivityOptions o;
       o.engine = engine;
-      const io::SensitivityRun run = io::sensitivity(text, o);
-      (void)io::sensitivity_json(run);
-      (void)io::sensitivity_text(run);
+      const studies::SensitivityRun run = studies::sensitivity(text, o);
+      (void)studies::sensitivity_json(run);
+      (void)studies::sensitivity_text(run);
     }
-  } catch (const io::CaseError&) {
+  } catch (const case_format::CaseError&) {
   } catch (const SolveError&) {
   }
   for (const char* format : {"json", "text"}) {
     try {
-      io::RenderOptions o;
+      case_format::RenderOptions o;
       o.format = format;
-      (void)io::render(spec, "certified:64", o);
-    } catch (const io::CaseError&) {
+      (void)studies::render(spec, "certified:64", o);
+    } catch (const case_format::CaseError&) {
     } catch (const SolveError&) {
     }
   }
   flint_cleanup();  // Arb's caches (pi, powers of ten) would otherwise count as this input's leak
   try {
-    (void)exact_analyze(io::to_scene<rational>(spec), io::to_strategies<rational>(spec));
+    (void)exact_analyze(case_format::to_scene<rational>(spec), case_format::to_strategies<rational>(spec));
   } catch (const Irrational&) {
-  } catch (const io::CaseError&) {
+  } catch (const case_format::CaseError&) {
   } catch (const SolveError&) {
   }
   return 0;

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "impact3d/io/case_spec.hpp"
+#include "impact3d/case_format/case_spec.hpp"
 #include "impact3d/verification/compare.hpp"
 
 inline int fuzz_compare(const std::uint8_t* data, std::size_t size, const char* extension) {
@@ -24,11 +24,11 @@ inline int fuzz_compare(const std::uint8_t* data, std::size_t size, const char* 
     (void)impact3d::verification::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
     o.subset = true;
     (void)impact3d::verification::compare(IMPACT3D_FUZZ_REFERENCE, path, o);
-  } catch (const impact3d::io::CaseError&) {
+  } catch (const impact3d::case_format::CaseError&) {
   }
   try {
     (void)impact3d::verification::compare(path, IMPACT3D_FUZZ_REFERENCE, impact3d::verification::CompareOptions{});
-  } catch (const impact3d::io::CaseError&) {
+  } catch (const impact3d::case_format::CaseError&) {
   }
   std::remove(path.c_str());
   return 0;

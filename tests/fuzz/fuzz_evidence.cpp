@@ -6,20 +6,20 @@
 #include <string>
 
 #include "figure8_case.hpp"
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/read_evidence.hpp"
-#include "impact3d/io/reconstruct.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/case_format/read_evidence.hpp"
+#include "impact3d/studies/reconstruct.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace impact3d;
   try {
-    const io::EvidenceSpec spec = io::read_evidence(std::string(reinterpret_cast<const char*>(data), size));
-    io::ReconstructOptions o;
-    o.strategy = io::read_case(fuzz::kFigure8).strategies[1];
-    const io::Reconstruction r = io::reconstruct(fuzz::kFigure8, spec, o);
-    (void)io::reconstruction_json(r);
-    (void)io::reconstruction_text(r);
-  } catch (const io::CaseError&) {
+    const case_format::EvidenceSpec spec = case_format::read_evidence(std::string(reinterpret_cast<const char*>(data), size));
+    studies::ReconstructOptions o;
+    o.strategy = case_format::read_case(fuzz::kFigure8).strategies[1];
+    const studies::Reconstruction r = studies::reconstruct(fuzz::kFigure8, spec, o);
+    (void)studies::reconstruction_json(r);
+    (void)studies::reconstruction_text(r);
+  } catch (const case_format::CaseError&) {
   }
   return 0;
 }

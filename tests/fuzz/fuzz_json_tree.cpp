@@ -9,12 +9,12 @@
 #include <cstring>
 #include <string_view>
 
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/json_tree.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/case_format/json_tree.hpp"
 #include "json_tree_equal.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace impact3d::io;
+  using namespace impact3d::case_format;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   JsonValue fast;
   const bool accepted = parse_json_tree_fast(text, fast);

@@ -7,28 +7,28 @@
 #include <vector>
 
 #include "figure8_case.hpp"
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/montecarlo.hpp"
-#include "impact3d/io/read_uncertainty.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/studies/montecarlo.hpp"
+#include "impact3d/case_format/read_uncertainty.hpp"
 
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace impact3d;
   try {
-    const io::UncertaintySpec spec = io::read_uncertainty(std::string(reinterpret_cast<const char*>(data), size));
-    const uncertainty::Sampler sampler = io::make_sampler(spec);
+    const case_format::UncertaintySpec spec = case_format::read_uncertainty(std::string(reinterpret_cast<const char*>(data), size));
+    const uncertainty::Sampler sampler = case_format::make_sampler(spec);
     std::vector<double> values(sampler.size());
     for (std::uint64_t i = 0; i < 4; ++i) sampler.draw(i, values.data());
-    io::UncertaintySpec few = spec;
+    case_format::UncertaintySpec few = spec;
     few.samples = 3;
-    io::MonteCarloOptions o;
+    studies::MonteCarloOptions o;
     o.jobs = 1;
     o.keep_samples = true;
-    const io::MonteCarloRun run = io::montecarlo(fuzz::kFigure8, few, o);
-    (void)io::montecarlo_json(run);
-    (void)io::montecarlo_text(run);
-    io::samples_csv(run, [](std::string_view) {});
-  } catch (const io::CaseError&) {
+    const studies::MonteCarloRun run = studies::montecarlo(fuzz::kFigure8, few, o);
+    (void)studies::montecarlo_json(run);
+    (void)studies::montecarlo_text(run);
+    studies::samples_csv(run, [](std::string_view) {});
+  } catch (const case_format::CaseError&) {
   }
   return 0;
 }

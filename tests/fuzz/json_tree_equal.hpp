@@ -3,9 +3,9 @@
 
 #include <cstring>
 
-#include "impact3d/io/json_tree.hpp"
+#include "impact3d/case_format/json_tree.hpp"
 
-namespace impact3d::io {
+namespace impact3d::case_format {
 
 inline bool json_tree_equal(const JsonValue& a, const JsonValue& b) {
   if (a.type != b.type || a.flag != b.flag || a.text != b.text || a.keys != b.keys || a.items.size() != b.items.size())
@@ -16,4 +16,4 @@ inline bool json_tree_equal(const JsonValue& a, const JsonValue& b) {
   return true;
 }
 
-}  // namespace impact3d::io
+}  // namespace impact3d::case_format

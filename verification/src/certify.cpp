@@ -7,10 +7,10 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/io/scalar_text.hpp"
-#include "impact3d/io/to_scene.hpp"
-#include "impact3d/numeric/certified.hpp"
-#include "impact3d/numeric/scalars.hpp"
+#include "impact3d/case_format/scalar_text.hpp"
+#include "impact3d/case_format/to_scene.hpp"
+#include "impact3d/mechanics/certified.hpp"
+#include "impact3d/scalar/scalars.hpp"
 
 namespace impact3d::verification {
 namespace {
@@ -58,14 +58,14 @@ struct Tally {
 };
 
 template <typename T>
-void check_precision(const std::vector<std::pair<std::string, io::CaseSpec>>& cases, const std::vector<std::optional<CertifiedAnalysis>>& refs,
+void check_precision(const std::vector<std::pair<std::string, case_format::CaseSpec>>& cases, const std::vector<std::optional<CertifiedAnalysis>>& refs,
                      Engine engine, double corrupt, std::map<std::string, Tally>& q, int& skipped) {
   for (std::size_t i = 0; i < cases.size(); ++i) {
     if (!refs[i]) continue;
     const CertifiedAnalysis& ref = *refs[i];
     Analysis<T> a;
     try {
-      a = analyze(io::to_scene<T>(cases[i].second), io::to_strategies<T>(cases[i].second), engine);
+      a = analyze(case_format::to_scene<T>(cases[i].second), case_format::to_strategies<T>(cases[i].second), engine);
     } catch (const std::exception&) {
       ++skipped;
       continue;
@@ -98,13 +98,13 @@ void check_precision(const std::vector<std::pair<std::string, io::CaseSpec>>& ca
 
 }  // namespace
 
-bool certify(const std::vector<std::pair<std::string, io::CaseSpec>>& cases, std::string& report, double corrupt_double) {
+bool certify(const std::vector<std::pair<std::string, case_format::CaseSpec>>& cases, std::string& report, double corrupt_double) {
   std::vector<std::optional<CertifiedAnalysis>> refs;
   int enclosed = 0;
   for (const auto& [name, spec] : cases) {
     const BallBits bits(kCertifyBits);
     try {
-      refs.push_back(certified_analyze(io::to_scene<Ball>(spec), io::to_strategies<Ball>(spec)));
+      refs.push_back(certified_analyze(case_format::to_scene<Ball>(spec), case_format::to_strategies<Ball>(spec)));
       ++enclosed;
     } catch (const std::exception& e) {
       refs.push_back(std::nullopt);

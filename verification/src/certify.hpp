@@ -7,12 +7,12 @@
 #include <utility>
 #include <vector>
 
-#include "impact3d/io/case_spec.hpp"
+#include "impact3d/case_format/case_spec.hpp"
 
 namespace impact3d::verification {
 
 // Appends its report to `report`; false when a bound fails or nothing was checked. `corrupt_double`
 // (for the tests) is added, relative, to every double P_n before it is checked.
-bool certify(const std::vector<std::pair<std::string, io::CaseSpec>>& cases, std::string& report, double corrupt_double = 0);
+bool certify(const std::vector<std::pair<std::string, case_format::CaseSpec>>& cases, std::string& report, double corrupt_double = 0);
 
 }  // namespace impact3d::verification

@@ -20,10 +20,10 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "impact3d/io/case_spec.hpp"
-#include "impact3d/io/escape.hpp"
-#include "impact3d/io/json_literals.hpp"
-#include "impact3d/io/limits.hpp"
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/case_format/escape.hpp"
+#include "impact3d/case_format/json_literals.hpp"
+#include "impact3d/case_format/limits.hpp"
 
 #include "compare_diagnosis.hpp"
 
@@ -32,7 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using json = nlohmann::json;
-using io::CaseError;
+using case_format::CaseError;
 
 // A CSV cell holds a number or a short string; anything longer is not a result.
 constexpr std::size_t kCellChars = 256;
@@ -161,7 +161,7 @@ const json* find(const json& root, const std::vector<std::string>& parts) {
 }
 
 json read_json(const std::string& file) {
-  return io::parse_json_bounded(io::read_text_file(file, io::limits::kResultFileBytes), file + ": $", io::limits::kResultDepth);
+  return case_format::parse_json_bounded(case_format::read_text_file(file, case_format::limits::kResultFileBytes), file + ": $", case_format::limits::kResultDepth);
 }
 
 RefCase load_reference(const std::string& name, const std::string& file) {
@@ -177,7 +177,7 @@ RefCase load_reference(const std::string& name, const std::string& file) {
   }
   for (std::size_t i = 0; i < results->size(); ++i) {
     const json& r = (*results)[i];
-    if (!r.is_object()) throw CaseError(file + ": " + io::element_path("$.results", i), "not an object");
+    if (!r.is_object()) throw CaseError(file + ": " + case_format::element_path("$.results", i), "not an object");
     auto& leaves = rc.results.emplace_back();
     // The strategy echoes the input, the warnings are prose, the rounding bound belongs to the
     // precision that computed the result, and the decisions to the ball arithmetic that proved it: none
@@ -201,7 +201,7 @@ RefCase load_reference(const std::string& name, const std::string& file) {
 
 // Other people's text in a detail: quoted, and cut short.
 std::string excerpt(std::string_view s) {
-  return s.size() > 60 ? io::quoted(s.substr(0, 60)) + "..." : io::quoted(s);
+  return s.size() > 60 ? case_format::quoted(s.substr(0, 60)) + "..." : case_format::quoted(s);
 }
 
 std::string describe(const json& v) {
@@ -468,7 +468,7 @@ std::optional<std::size_t> result_index(std::string_view s, std::size_t n) {
 // Each row stays a flat map from the header's dotted paths to its cells; the reference's leaves are
 // looked up in it. No document is built from a column's path, so no path can size an allocation.
 CsvFile read_csv(const std::string& file, const std::vector<RefCase>& refs, const Comparer& cmp) {
-  const std::string text = io::read_text_file(file, io::limits::kResultFileBytes);
+  const std::string text = case_format::read_text_file(file, case_format::limits::kResultFileBytes);
   std::string_view rest = text;
   if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);  // a spreadsheet's byte-order mark
   int row = 0;
@@ -482,8 +482,8 @@ CsvFile read_csv(const std::string& file, const std::vector<RefCase>& refs, cons
   };
   const auto header_line = next_line();
   if (!header_line) throw CaseError(file, "empty CSV");
-  if (static_cast<std::size_t>(std::count(header_line->begin(), header_line->end(), ',')) >= io::limits::kCsvColumns)
-    throw CaseError(file, fmt::format("more than {} columns", io::limits::kCsvColumns));
+  if (static_cast<std::size_t>(std::count(header_line->begin(), header_line->end(), ',')) >= case_format::limits::kCsvColumns)
+    throw CaseError(file, fmt::format("more than {} columns", case_format::limits::kCsvColumns));
   std::vector<std::string> header;
   for (const auto cell : split_cells(*header_line)) {
     if (cell.size() > kCellChars)
@@ -502,9 +502,9 @@ CsvFile read_csv(const std::string& file, const std::vector<RefCase>& refs, cons
   }
   std::unordered_map<std::string, std::size_t> column;
   for (std::size_t c = 0; c < header.size(); ++c) {
-    if (!column.emplace(header[c], c).second) throw CaseError(file, fmt::format("column {} appears twice", io::quoted(header[c])));
+    if (!column.emplace(header[c], c).second) throw CaseError(file, fmt::format("column {} appears twice", case_format::quoted(header[c])));
     if (c >= 2 && !known.count(header[c]))
-      throw CaseError(file, fmt::format("column {} is not a field of the reference that compare checks", io::quoted(header[c])));
+      throw CaseError(file, fmt::format("column {} is not a field of the reference that compare checks", case_format::quoted(header[c])));
   }
 
   std::unordered_map<std::string, std::size_t> case_of;
@@ -523,24 +523,24 @@ CsvFile read_csv(const std::string& file, const std::vector<RefCase>& refs, cons
       throw CaseError(file, fmt::format("row {} has {} cells, the header {}", row, commas + 1, header.size()));
     const auto cells = split_cells(*line);
     const auto where = [&](std::size_t c) {
-      return fmt::format("row {}, column {}", row, c < 2 ? header[c] : io::quoted(header[c]));
+      return fmt::format("row {}, column {}", row, c < 2 ? header[c] : case_format::quoted(header[c]));
     };
     for (std::size_t c = 0; c < cells.size(); ++c)
       if (cells[c].size() > kCellChars)
         throw CaseError(file, fmt::format("{}: a cell longer than {} characters", where(c), kCellChars));
     const auto k = case_of.find(std::string(cells[0]));
     if (k == case_of.end())
-      throw CaseError(file, fmt::format("{}: {} is not a case of the reference", where(0), io::quoted(cells[0])));
+      throw CaseError(file, fmt::format("{}: {} is not a case of the reference", where(0), case_format::quoted(cells[0])));
     const RefCase& rc = refs[k->second];
     const auto i = result_index(cells[1], rc.results.size());
     if (!i) {
       if (rc.results.empty())
-        throw CaseError(file, fmt::format("{}: the reference case {} has no results", where(1), io::quoted(rc.name)));
+        throw CaseError(file, fmt::format("{}: the reference case {} has no results", where(1), case_format::quoted(rc.name)));
       throw CaseError(file, fmt::format("{}: expected a result index from 0 to {}, got {}", where(1), rc.results.size() - 1,
-                                        io::quoted(cells[1])));
+                                        case_format::quoted(cells[1])));
     }
     if (const auto [it, fresh] = first_row.emplace(std::pair(k->second, *i), row); !fresh)
-      throw CaseError(file, fmt::format("row {}: case {} result {} is also in row {}", row, io::quoted(rc.name), *i, it->second));
+      throw CaseError(file, fmt::format("row {}: case {} result {} is also in row {}", row, case_format::quoted(rc.name), *i, it->second));
 
     CsvCase& cc = out[k->second];
     cc.any = true;
@@ -578,7 +578,7 @@ CsvFile read_csv(const std::string& file, const std::vector<RefCase>& refs, cons
     for (std::size_t c = 2; c < cells.size(); ++c)
       if (!used[c] && !cells[c].empty())
         throw CaseError(file, fmt::format("{}: result {} of {} has no such field in the reference (leave the cell empty)",
-                                          where(c), *i, io::quoted(rc.name)));
+                                          where(c), *i, case_format::quoted(rc.name)));
   }
   return csv;
 }
@@ -615,7 +615,7 @@ int report(const std::vector<RefCase>& refs, std::vector<std::optional<CaseRepor
   std::map<std::string, std::size_t> compared_by_leaf;
   std::vector<detail::NumericFailure> numeric_failures;
   // Every line passes through printable(): case names, paths and values come from other people's files.
-  const auto line = [](const std::string& s) { return io::printable(s) + "\n"; };
+  const auto line = [](const std::string& s) { return case_format::printable(s) + "\n"; };
   // With --rtol-from-bound each case's rtol is a column of its own.
   const auto row = [&](const std::string& name, const std::string& fields, const std::string& failed, const std::string& rtol,
                        const std::string& err, const std::string& field) {
@@ -787,7 +787,7 @@ int compare(const std::string& reference, const std::string& other, const Compar
     const auto it = std::find_if(refs.begin(), refs.end(), [&](const RefCase& rc) { return rc.name == name; });
     if (it == refs.end())
       throw CaseError(other, fmt::format("no case of the reference is named {} (a result file is named like its case)",
-                                         io::quoted(name)));
+                                         case_format::quoted(name)));
     const json doc = read_json(other);
     for (std::size_t k = 0; k < refs.size(); ++k) {
       if (&refs[k] == &*it) reports[k] = cmp.compare_json(refs[k], doc, other);

@@ -12,23 +12,23 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "impact3d/io/decimal.hpp"
-#include "impact3d/io/escape.hpp"
-#include "impact3d/io/number_literals.hpp"
-#include "impact3d/io/scalar_text.hpp"
-#include "impact3d/numeric/exact.hpp"
+#include "impact3d/case_format/decimal.hpp"
+#include "impact3d/case_format/escape.hpp"
+#include "impact3d/case_format/number_literals.hpp"
+#include "impact3d/case_format/scalar_text.hpp"
+#include "impact3d/scalar/exact.hpp"
 
 namespace impact3d::verification {
 namespace {
 
 using json = nlohmann::json;
 
-rational exact(std::string_view literal) { return io::scalar_from_text<rational>(std::string(literal)); }
+rational exact(std::string_view literal) { return case_format::scalar_from_text<rational>(std::string(literal)); }
 
 // The rounding interval of `x` written at `digits` significant digits: the exact values that round to
 // it. Below a power of ten the next digit down is a tenth as large.
 std::pair<rational, rational> rounding_interval(std::string_view literal, int digits) {
-  const io::Decimal d = io::parse_decimal(literal);
+  const case_format::Decimal d = case_format::parse_decimal(literal);
   const long lead = d.exponent + static_cast<long>(d.digits.size()) - 1;
   const auto half_unit = [&](long at) {
     const long e = at - (digits - 1);
@@ -103,7 +103,7 @@ class Prover {
     // Fields by scope: the top level (-1) and each result.
     std::map<long, std::vector<Field>> scopes;
     double largest = 0;
-    for (const auto& n : io::number_literals(text)) {
+    for (const auto& n : case_format::number_literals(text)) {
       if (n.null || excluded(n.path)) continue;
       Field f{n.path, text.substr(n.begin, n.end - n.begin), nullptr};
       largest = std::max(largest, std::fabs(std::strtod(f.literal.c_str(), nullptr)));
@@ -150,7 +150,7 @@ class Prover {
 
   const std::string& failure() const { return failure_; }
 
-  void write_block(io::JsonWriter& w) const {
+  void write_block(case_format::JsonWriter& w) const {
     w.key("certified").begin_object();
     w.key("by").string(fmt::format("impact3d solve --precision certified (ball arithmetic, {})", cert_.at("precision").get<std::string>()));
     w.key("numbers_proven").number([&](auto& out) { out += std::to_string(proven_); });
@@ -170,7 +170,7 @@ class Prover {
     w.end_object();
   }
 
-  void write_decisions(io::JsonWriter& w, std::size_t k) const {
+  void write_decisions(case_format::JsonWriter& w, std::size_t k) const {
     w.key("decisions").begin_array();
     for (const auto& d : cert_.at("results").at(k).value("decisions", json::array())) {
       w.begin_object();
@@ -212,8 +212,8 @@ class Prover {
         const auto it = others_.find(there);
         const json* v = it == others_.end() ? nullptr : it->second;
         if (!v || *v != *f.value) {
-          c.failure = fmt::format("{}: {} where the certified result has {}", f.path, io::printable(f.value->dump()),
-                                  v ? io::printable(v->dump()) : std::string("nothing"));
+          c.failure = fmt::format("{}: {} where the certified result has {}", f.path, case_format::printable(f.value->dump()),
+                                  v ? case_format::printable(v->dump()) : std::string("nothing"));
           return c;
         }
         continue;
@@ -256,7 +256,7 @@ std::string zeroed(const std::string& text, const std::vector<std::string>& path
   std::string out;
   out.reserve(text.size());
   std::size_t from = 0;
-  for (const auto& n : io::number_literals(text))
+  for (const auto& n : case_format::number_literals(text))
     if (std::find(paths.begin(), paths.end(), n.path) != paths.end()) {
       out.append(text, from, n.begin - from);
       out += '0';
@@ -272,8 +272,8 @@ ReferenceProof prove_reference(const RenderReference& render, const std::string&
   Prover prover(certified, digits);
   const auto noise = prover.check(render({}, {}));
   if (!prover.failure().empty()) return {{}, prover.failure()};
-  std::string document = zeroed(render([&](io::JsonWriter& w) { prover.write_block(w); },
-                                       [&](io::JsonWriter& w, std::size_t k) { prover.write_decisions(w, k); }),
+  std::string document = zeroed(render([&](case_format::JsonWriter& w) { prover.write_block(w); },
+                                       [&](case_format::JsonWriter& w, std::size_t k) { prover.write_decisions(w, k); }),
                                 noise);
   // The document as written, proven again: nothing left that is noise or unproven.
   if (!prover.check(document).empty() || !prover.failure().empty())

@@ -10,10 +10,10 @@
 
 #include <fmt/format.h>
 
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/numeric/exact_analysis.hpp"
-#include "impact3d/numeric/rounding.hpp"
-#include "impact3d/numeric/scalars.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/mechanics/exact_analysis.hpp"
+#include "impact3d/mechanics/rounding.hpp"
+#include "impact3d/scalar/scalars.hpp"
 
 namespace impact3d::verification {
 namespace {
@@ -23,27 +23,27 @@ using F = mp::float100;
 
 struct Case {
   std::string name;
-  io::CaseSpec spec;
+  case_format::CaseSpec spec;
   std::string file;  // empty for the random cases
 };
 
 // A case's error, with its file named: the reference solve of a case can fail (not approaching, a
 // strategy with no impulse) as `solve` would, and says where.
-[[noreturn]] void rethrow_naming(const Case& c, const io::CaseError& e) {
-  throw io::CaseError((c.file.empty() ? c.name : c.file) + ": " + e.path, e.what());
+[[noreturn]] void rethrow_naming(const Case& c, const case_format::CaseError& e) {
+  throw case_format::CaseError((c.file.empty() ? c.name : c.file) + ": " + e.path, e.what());
 }
 
-io::Number num(double v) {
-  return io::Number{fmt::format("{:.6g}", v), std::stod(fmt::format("{:.6g}", v))};
+case_format::Number num(double v) {
+  return case_format::Number{fmt::format("{:.6g}", v), std::stod(fmt::format("{:.6g}", v))};
 }
 
 // A random collision written as decimal text (six significant digits), so that every precision
 // converts the very same decimals; products of inertia, pitched and rolled vehicles, tilted frames.
-io::CaseSpec random_case(std::mt19937_64& g) {
+case_format::CaseSpec random_case(std::mt19937_64& g) {
   std::uniform_real_distribution<double> u(0, 1);
   auto in = [&](double a, double b) { return a + (b - a) * u(g); };
   for (;;) {
-    io::CaseSpec c;
+    case_format::CaseSpec c;
     c.name = "random";
     for (auto& v : c.vehicles) {
       v.mass = num(in(700, 3500));
@@ -63,9 +63,9 @@ io::CaseSpec random_case(std::mt19937_64& g) {
     c.contact.tangent_roll = num(in(-30, 30));
     c.restitution = num(in(0, 1));
     // Through the table's names, as a case file would give them.
-    auto spec = [&](std::string_view name, std::map<std::string, std::optional<io::Number>, std::less<>> numbers,
+    auto spec = [&](std::string_view name, std::map<std::string, std::optional<case_format::Number>, std::less<>> numbers,
                     std::map<std::string, std::string, std::less<>> choices = {}) {
-      return io::StrategySpec{*io::find_strategy_kind(name), std::move(numbers), std::move(choices), ""};
+      return case_format::StrategySpec{*case_format::find_strategy_kind(name), std::move(numbers), std::move(choices), ""};
     };
     c.strategies = {spec("pc-crash", {{"mu", num(in(0, 1.2))}}),
                     spec("wach", {{"mu", num(in(0, 1.2))}}, {{"limit", "cir"}}),
@@ -73,9 +73,9 @@ io::CaseSpec random_case(std::mt19937_64& g) {
                     spec("brach", {{"mu_t", num(in(-0.5, 0.5))}, {"mu_z", num(in(-0.3, 0.3))}}),
                     spec("brach", {{"mu_t", std::nullopt}, {"mu_z", std::nullopt}})};
     try {
-      io::to_scene<double>(c);  // approaching?
+      case_format::to_scene<double>(c);  // approaching?
       return c;
-    } catch (const io::CaseError&) {
+    } catch (const case_format::CaseError&) {
     }
   }
 }
@@ -88,16 +88,16 @@ std::vector<Case> collect(const VerifyOptions& o) {
     if (fs::is_directory(input, ec)) {
       for (fs::directory_iterator it(input, ec), end; !ec && it != end; it.increment(ec))
         if (it->path().extension() == ".json") files.push_back(it->path());
-      if (ec) throw io::CaseError(input, "cannot read the directory (" + ec.message() + ")");
+      if (ec) throw case_format::CaseError(input, "cannot read the directory (" + ec.message() + ")");
       std::sort(files.begin(), files.end());
     } else {
       files.push_back(input);
     }
     for (const auto& f : files) {
       try {
-        cases.push_back({f.stem().string(), io::read_case(io::read_text_file(f.string())), f.string()});
-      } catch (const io::CaseError& e) {
-        throw e.path == f.string() ? e : io::CaseError(f.string() + ": " + e.path, e.what());  // name the file too
+        cases.push_back({f.stem().string(), case_format::read_case(case_format::read_text_file(f.string())), f.string()});
+      } catch (const case_format::CaseError& e) {
+        throw e.path == f.string() ? e : case_format::CaseError(f.string() + ": " + e.path, e.what());  // name the file too
       }
     }
   }
@@ -109,7 +109,7 @@ std::vector<Case> collect(const VerifyOptions& o) {
 template <typename T>
 F wide(const T& x) {
   if constexpr (std::is_arithmetic_v<T>) return F(x);
-  else return F(io::scalar_to_text(x, std::numeric_limits<T>::max_digits10 + 3));
+  else return F(case_format::scalar_to_text(x, std::numeric_limits<T>::max_digits10 + 3));
 }
 
 template <typename T>
@@ -168,7 +168,7 @@ void measure(const Case& c, const Analysis<F>& ref, double cond, Engine engine, 
   const double eps = static_cast<double>(std::numeric_limits<T>::epsilon());
   Analysis<T> a;
   try {
-    a = analyze(io::to_scene<T>(c.spec), io::to_strategies<T>(c.spec), engine);
+    a = analyze(case_format::to_scene<T>(c.spec), case_format::to_strategies<T>(c.spec), engine);
   } catch (const std::exception& e) {
     ++q.decisions_differ;
     q.decision_notes.push_back(c.name + ": " + e.what());
@@ -258,18 +258,18 @@ void run_precision(const std::string& name, const std::vector<Case>& cases, cons
 
 int verify(const VerifyOptions& o) {
   const std::vector<Case> cases = collect(o);
-  if (cases.empty()) throw io::CaseError("verify", "no cases to verify: name case files or directories holding them, or --random N");
+  if (cases.empty()) throw case_format::CaseError("verify", "no cases to verify: name case files or directories holding them, or --random N");
   std::vector<Analysis<F>> refs;
   std::vector<double> conds;
   for (const auto& c : cases) {
     try {
-      const Scene<F> s = io::to_scene<F>(c.spec);
-      refs.push_back(analyze(s, io::to_strategies<F>(c.spec), Engine::generated));
+      const Scene<F> s = case_format::to_scene<F>(c.spec);
+      refs.push_back(analyze(s, case_format::to_strategies<F>(c.spec), Engine::generated));
       conds.push_back(static_cast<double>(refs.back().amplification));  // rounding.hpp
-    } catch (const io::CaseError& e) {
+    } catch (const case_format::CaseError& e) {
       rethrow_naming(c, e);
     } catch (const SolveError& e) {
-      rethrow_naming(c, io::no_solution(c.spec, e));
+      rethrow_naming(c, case_format::no_solution(c.spec, e));
     }
   }
   std::string report = fmt::format(
@@ -287,10 +287,10 @@ int verify(const VerifyOptions& o) {
   for (std::size_t i = 0; i < cases.size(); ++i) {
     std::optional<ExactAnalysis> x;
     try {
-      x = exact_analyze(io::to_scene<rational>(cases[i].spec), io::to_strategies<rational>(cases[i].spec));
+      x = exact_analyze(case_format::to_scene<rational>(cases[i].spec), case_format::to_strategies<rational>(cases[i].spec));
     } catch (const Irrational&) {
       continue;
-    } catch (const io::CaseError&) {
+    } catch (const case_format::CaseError&) {
       continue;  // a rotation orthonormal within rounding::orthonormality_tolerance but not exactly: no exact fractions
     }
     for (std::size_t k = 0; k < x->results.size(); ++k) {
@@ -313,7 +313,7 @@ int verify(const VerifyOptions& o) {
     if constexpr (!std::is_same_v<T, F>) run_precision<T>(std::string(precision_name<T>), cases, refs, conds, report, ok);
   });
   if (o.certify) {
-    std::vector<std::pair<std::string, io::CaseSpec>> named;
+    std::vector<std::pair<std::string, case_format::CaseSpec>> named;
     for (const auto& c : cases) named.push_back({c.name, c.spec});
     ok = certify(named, report, o.corrupt_double) && ok;
   }

@@ -7,11 +7,11 @@
 #include <fstream>
 #include <iostream>
 
-#include "impact3d/io/read_case.hpp"
-#include "impact3d/io/render.hpp"
-#include "impact3d/io/result_json.hpp"
-#include "impact3d/numeric/multiprecision.hpp"
-#include "impact3d/numeric/rounding.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/studies/precision.hpp"
+#include "impact3d/case_format/result_json.hpp"
+#include "impact3d/scalar/multiprecision.hpp"
+#include "impact3d/mechanics/rounding.hpp"
 #include "impact3d/verification/reference_proof.hpp"
 
 namespace fs = std::filesystem;
@@ -43,9 +43,9 @@ int main(int argc, char** argv) {
   for (int i = 3; i < argc; ++i) {
     const fs::path in = argv[i];
     try {
-      const io::CaseSpec spec = io::read_case(io::read_text_file(in.string()));
-      const Scene<F> scene = io::to_scene<F>(spec);
-      const auto strategies = io::to_strategies<F>(spec);
+      const case_format::CaseSpec spec = case_format::read_case(case_format::read_text_file(in.string()));
+      const Scene<F> scene = case_format::to_scene<F>(spec);
+      const auto strategies = case_format::to_strategies<F>(spec);
       const Analysis<F> a = analyze(scene, strategies, Engine::generated);
       const Analysis<F> b = analyze(scene, strategies, Engine::direct);
       if (engine_difference(a, b) > rounding::engine_agreement_tolerance<F>()) {
@@ -54,15 +54,15 @@ int main(int argc, char** argv) {
         return 1;
       }
       // The default certified precision first; where a ball is too wide to prove a digit, more bits.
-      io::RenderOptions certified;
+      case_format::RenderOptions certified;
       certified.format = "json";
       verification::ReferenceProof proof;
       for (const char* precision : {"certified", "certified:512", "certified:1024", "certified:2048", "certified:4096"}) {
         proof = verification::prove_reference(
             [&](const auto& extra, const auto& per_result) {
-              return io::result_json(spec, a, "100", kDigits, true, extra, false, nullptr, per_result);
+              return case_format::result_json(spec, a, "100", kDigits, true, extra, false, nullptr, per_result);
             },
-            io::render(spec, precision, certified), kDigits);
+            studies::render(spec, precision, certified), kDigits);
         if (proof.failure.empty()) break;
       }
       if (!proof.failure.empty()) {

@@ -22,7 +22,7 @@ struct CompareOptions {
 };
 
 // Prints the table to stdout; returns 0 when every reference field in scope was compared and passes,
-// 1 otherwise (a comparison of nothing fails). Throws io::CaseError naming the file on bad input, before
+// 1 otherwise (a comparison of nothing fails). Throws case_format::CaseError naming the file on bad input, before
 // anything is printed.
 int compare(const std::string& reference, const std::string& other, const CompareOptions& o);
 

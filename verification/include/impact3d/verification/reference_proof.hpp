@@ -11,7 +11,7 @@
 #include <functional>
 #include <string>
 
-#include "impact3d/io/json_writer.hpp"
+#include "impact3d/case_format/json_writer.hpp"
 
 namespace impact3d::verification {
 
@@ -22,8 +22,8 @@ struct ReferenceProof {
 
 // Writes the reference document at the proof's digits; `extra` adds to the top level, `per_result` to
 // result k (result_json's hooks).
-using RenderReference = std::function<std::string(const std::function<void(io::JsonWriter&)>& extra,
-                                                  const std::function<void(io::JsonWriter&, std::size_t)>& per_result)>;
+using RenderReference = std::function<std::string(const std::function<void(case_format::JsonWriter&)>& extra,
+                                                  const std::function<void(case_format::JsonWriter&, std::size_t)>& per_result)>;
 
 // `render` writes the reference at `digits` significant digits; `certified` is the certified result
 // document of the same case.

@@ -1,0 +1,185 @@
+// The result as CSV (docs/batch.md, "Results as CSV"): a fixed set of columns, one row per strategy of each
+// case, every cell the text the result document (result_json.hpp) has at the column's path. A floating
+// precision writes the rows straight from the analysis (result_csv_rows); exact results, whose document
+// render_exact writes, take their cells from the document as it is written (result_csv_pick,
+// result_csv_from_document). The columns are listed once, the document's in result_csv_document_cells
+// and each result's in result_csv_cells, for the header, the paths picked and the cells.
+#pragma once
+
+#include <algorithm>
+#include <charconv>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impact3d/case_format/case_spec.hpp"
+#include "impact3d/case_format/csv_text.hpp"
+#include "impact3d/case_format/json_pick.hpp"
+#include "impact3d/case_format/json_text.hpp"
+#include "impact3d/case_format/present.hpp"
+#include "impact3d/case_format/scalar_text.hpp"
+#include "impact3d/mechanics/analysis.hpp"
+
+namespace impact3d::case_format {
+
+// The result document's own columns, the same in every row of a case, in order; a sink as
+// result_csv_cells' takes each as text(name, text).
+template <typename Sink>
+void result_csv_document_cells(Sink& c, const CaseSpec& spec, std::string_view precision, Engine engine) {
+  c.text("name", spec.name);
+  c.text("units", units_name(spec.units));
+  c.text("precision", precision);
+  c.text("engine", engine_name(engine));
+}
+
+// The columns of one result, in order, each named by its path in the result document. A sink takes
+// each as number(name, value[, factor]), number(name, optional[, factor]), vec(name, v, factor), count(name, optional
+// int), text(name, text) and bound(name, value) (the rounding bound's 3 digits); an absent value is an
+// empty cell. The names do not depend on the solution: the header is the same sink over any.
+template <typename Scalar, typename Sink>
+void result_csv_cells(Sink& c, const Solution<Scalar>& s, const Present<Scalar>& p) {
+  const auto& f = p.f;
+  const auto& imp = s.impulse;
+  c.number("impulse_ratio.mu", imp.mu);
+  c.number("impulse_ratio.mu_t", imp.mu_t);
+  c.number("impulse_ratio.mu_z", imp.mu_z);
+  c.number("limits.gir", imp.gir);
+  c.number("limits.cir", imp.cir);
+  c.number("limits.mu_t_critical", imp.mu_t_critical);
+  c.number("limits.mu_z_critical", imp.mu_z_critical);
+  c.number("plane_angle_deg", imp.plane_angle_deg);
+  c.vec("impulse.contact", imp.P_C, f.impulse);
+  c.vec("impulse.world", s.P_W, f.impulse);
+  c.vec("relative_velocity.before", s.V_ri, f.velocity);
+  c.vec("relative_velocity.after", s.V_rf, f.velocity);
+  c.number("sliding.before", s.sliding_before, f.velocity);
+  c.number("sliding.after", s.sliding_after, f.velocity);
+  c.number("sliding.swerve_angle_deg", s.swerve_deg);
+  c.number("sliding.swerve_speed", s.swerve_speed, f.velocity);
+  c.number("impulse_space.restitution_effective", s.restitution_effective);
+  c.text("impulse_space.t_sliding", axis_change_name(s.t_change));
+  c.text("impulse_space.z_sliding", axis_change_name(s.z_change));
+  c.text("impulse_space.volume", s.volume);
+  static constexpr const char* kVehicle[2][6] = {
+      {"vehicles[0].velocity", "vehicles[0].angular_velocity", "vehicles[0].delta_v", "vehicles[0].delta_v_magnitude",
+       "vehicles[0].pdof_deg", "vehicles[0].pdof_clock"},
+      {"vehicles[1].velocity", "vehicles[1].angular_velocity", "vehicles[1].delta_v", "vehicles[1].delta_v_magnitude",
+       "vehicles[1].pdof_deg", "vehicles[1].pdof_clock"}};
+  for (int i = 0; i < 2; ++i) {
+    const auto& change = s.change[i];
+    c.vec(kVehicle[i][0], s.after[i].v_W, f.velocity);
+    c.vec(kVehicle[i][1], s.after[i].w_B, f.angular_velocity);
+    c.vec(kVehicle[i][2], change.dv_W, f.velocity);
+    c.number(kVehicle[i][3], change.dv, f.velocity);
+    c.number(kVehicle[i][4], change.pdof_deg);
+    c.count(kVehicle[i][5], change.clock);
+  }
+  c.number("energy.before", s.energy_before, f.energy);
+  c.number("energy.after", s.energy_after, f.energy);
+  c.number("energy.loss", s.energy_loss, f.energy);
+  c.bound("rounding_bound", s.rounding_bound);
+}
+
+// The names of result_csv_cells' columns, a vector's as three ("impulse.contact[0]", ...).
+const std::vector<std::string>& result_csv_column_names();
+
+// "line,result,error", the document's columns (name, units, precision, engine), "strategy,regime",
+// result_csv_cells' columns, "warnings"; and a newline.
+std::string result_csv_header();
+// The row of a case that was rejected: its line and the problem, every other cell empty.
+std::string result_csv_error(long line, const std::string& problem);
+// A strategy's cell: as --strategy writes it, name:key=value,...
+std::string strategy_cell_text(const StrategySpec& s);
+
+namespace detail {
+
+// Cells appended straight from the solution, as the result document writes each value (a value that
+// is not finite is null there, an empty cell here).
+template <typename Scalar>
+struct CsvCells {
+  JsonText& out;
+  const Present<Scalar>& p;
+
+  void finite_or_empty(std::size_t at) {
+    const std::string_view t = out.view().substr(at);
+    const std::size_t i = !t.empty() && (t.front() == '-' || t.front() == '+');
+    if (t.size() > i && (t[i] == 'i' || t[i] == 'n')) out.resize(at);
+  }
+  void scalar(const Scalar& x, int digits) {
+    out += ',';
+    const std::size_t at = out.size();
+    append_scalar(out, x, digits);
+    finite_or_empty(at);
+  }
+  void number(const char*, const Scalar& x) { scalar(x, p.digits); }
+  void number(const char*, const Scalar& x, const Scalar& factor) { scalar(Scalar(x / factor), p.digits); }
+  void number(const char*, const std::optional<Scalar>& x) {
+    if (x) scalar(*x, p.digits);
+    else out += ',';
+  }
+  void number(const char*, const std::optional<Scalar>& x, const Scalar& factor) {
+    if (x) scalar(Scalar(*x / factor), p.digits);
+    else out += ',';
+  }
+  void vec(const char*, const Vec3<Scalar>& v, const Scalar& factor) {
+    for (int i = 0; i < 3; ++i) scalar(Scalar(v[i] / factor), p.digits);
+  }
+  void count(const char*, const std::optional<int>& n) {
+    out += ',';
+    if (!n) return;
+    char* q = out.room(16);
+    out.commit(std::to_chars(q, q + 16, *n).ptr);
+  }
+  void text(const char*, std::string_view s) {
+    out += ',';
+    put_csv_text(out, s);
+  }
+  void bound(const char*, const Scalar& x) { scalar(x, 3); }
+};
+
+}  // namespace detail
+
+// The rows of one case straight from its analysis, `line` first: what result_csv_from_document gives
+// for the document result_json(c, a, precision, 0, false, {}, true) writes, byte for byte.
+template <typename Scalar>
+std::string result_csv_rows(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, long line) {
+  const Present<Scalar> p(c.units, std::numeric_limits<Scalar>::max_digits10);
+  JsonText out;
+  out.reserve(1024 * std::max<std::size_t>(a.solutions.size(), 1));
+  // The document's cells, the same in every row.
+  JsonText head;
+  detail::CsvCells<Scalar> head_cells{head, p};
+  result_csv_document_cells(head_cells, c, precision, a.engine);
+  head += ',';
+  detail::CsvCells<Scalar> cells{out, p};
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) {
+    const Solution<Scalar>& s = a.solutions[k];
+    constexpr std::size_t kDigits = 24;  // a long or a size_t in decimal, with room to spare
+    char* q = out.room(2 * kDigits + 2);
+    q = std::to_chars(q, q + kDigits, line).ptr;
+    *q++ = ',';
+    q = std::to_chars(q, q + kDigits, k).ptr;
+    *q++ = ',';
+    out.commit(q);
+    out += head.view();
+    put_csv_text(out, strategy_cell_text(c.strategies[k]));
+    out += ',';
+    put_csv_text(out, regime_name(s.impulse.regime));
+    result_csv_cells(cells, s, p);
+    out += ',';
+    if (!s.warnings.empty()) {
+      std::string joined;
+      for (const auto& w : s.warnings) joined += (joined.empty() ? "" : " | ") + w.text;
+      put_csv_text(out, joined);
+    }
+    out += '\n';
+  }
+  return std::move(out).take();
+}
+
+// The same rows from the text of the result document of `c` written with result_csv_pick's pick.
+JsonPick result_csv_pick();
+std::string result_csv_from_document(std::string_view document, const JsonPick& pick, const CaseSpec& c, long line);
+
+}  // namespace impact3d::case_format

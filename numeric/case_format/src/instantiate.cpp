@@ -1,0 +1,44 @@
+// The case format's solve-and-write at one scalar of scalars.hpp: numeric/CMakeLists.txt compiles this
+// file once per scalar with IMPACT3D_SCALAR_INDEX set.
+#include <limits>
+
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/case_format/render.hpp"
+#include "impact3d/case_format/report_html.hpp"
+#include "impact3d/case_format/report_text.hpp"
+#include "impact3d/case_format/result_csv.hpp"
+#include "impact3d/mechanics/analysis.hpp"
+
+namespace impact3d::case_format {
+
+template <typename Scalar>
+std::string render(const CaseSpec& spec, const RenderOptions& o) {
+  const Scene<Scalar> scene = to_scene<Scalar>(spec);
+  const Analysis<Scalar> a = analyze(scene, to_strategies<Scalar>(spec), o.engine);
+  const std::string precision(precision_name<Scalar>);
+  if (o.warning_codes) {
+    o.warning_codes->clear();
+    for (const auto& sol : a.solutions) {
+      WarningSet codes = 0;
+      for (const auto& w : sol.warnings) codes |= warning_bit(w.code);
+      o.warning_codes->push_back(codes);
+    }
+  }
+  // The numbers written in the units asked for: the writers present in their spec's units.
+  CaseSpec in_units;
+  const CaseSpec* shown = &spec;
+  if (o.units && *o.units != spec.units) {
+    in_units = spec;
+    in_units.units = *o.units;
+    shown = &in_units;
+  }
+  if (o.format == "csv") return result_csv_rows(*shown, a, precision, o.line);
+  if (o.format == "json" || o.format == "jsonl") return result_json(*shown, a, precision, 0, false, {}, o.format == "jsonl", o.pick);
+  const int digits = o.digits > 0 ? o.digits : std::numeric_limits<Scalar>::digits10;
+  if (o.format == "html") return report_html(*shown, a, precision, digits, o.figures ? *o.figures : std::vector<ReportFigure>{}, o.figures_note);
+  return report_text(*shown, a, precision, digits);
+}
+
+template std::string render<ScalarAt<IMPACT3D_SCALAR_INDEX>>(const CaseSpec&, const RenderOptions&);
+
+}  // namespace impact3d::case_format

@@ -1,0 +1,66 @@
+// Wach: the solution plane contains n and the initial sliding velocity (eq 21), P_t' = mu P_n (eq 22),
+// P_z' = 0, and mu capped at the plane's CIR (eq 19, Wach) or GIR (eq 20, Virtual CRASH guide).
+#pragma once
+
+#include "impact3d/mechanics/problem.hpp"
+#include "impact3d/mechanics/strategies/limits.hpp"
+
+namespace impact3d::strategies {
+
+// Fills `out`; returns the singular constraint system, if any (then `out` is incomplete).
+template <typename Engine, typename Scalar>
+Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolution<Scalar>& out) {
+  PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), plane_length(p.V_ri.y(), p.V_ri.z()),
+                                         magnitude(p.V_ri), out,
+                                         "phi (eq 21) is undefined: there is no initial sliding velocity; "
+                                         "the t axis is used, directed so that the cap is not negative");
+  out.cir = Engine::try_plane_ratio(p, ax, p.restitution);
+  if (!out.cir) return {"wach CIR (eq 19)"};
+  out.gir = Engine::try_plane_ratio(p, ax, Scalar(0));
+  if (!out.gir) return {"wach GIR (eq 20)"};
+  const bool on_cir = spec.limit == WachLimit::cir;
+  const auto& cap = on_cir ? out.cir : out.gir;  // the cap used; a flip below negates it in place
+  if (has_warning(out.codes, WarningCode::plane_undefined)) {
+    // Without sliding the axis's direction is a convention, and the caps (eqs 19-20) are odd in it: on
+    // +t a negative cap would cap every mu >= 0, so that mu = 0 still gave the sticking impulse. Directed
+    // so that the cap is not negative, the impulse is friction toward sticking, capped where it sticks,
+    // whichever way the contact frame's t axis points.
+    bool flip;
+    {
+      const DecisionName<Scalar> name(decision_names::fallback_direction);
+      flip = *cap < Scalar(0);
+    }
+    if (flip) {
+      ax = {Scalar(-1), Scalar(0)};
+      out.cir = Scalar(-*out.cir);
+      out.gir = Scalar(-*out.gir);
+      out.plane = ax;
+      if constexpr (!is_exact_v<Scalar>)
+        if (out.for_report) out.plane_angle_deg = Scalar(180);
+    }
+  }
+  flag_if_not_finite(out, *out.cir, "CIR (eq 19)");
+  flag_if_not_finite(out, *out.gir, "GIR (eq 20)");
+  const Scalar limit = *cap;
+  flag_if_undecided(out, p, spec.mu, limit, on_cir ? "CIR (eq 19)" : "GIR (eq 20)");
+  bool capped;
+  {
+    const char* decision = on_cir ? decision_names::wach_cap_cir : decision_names::wach_cap_gir;
+    const DecisionName<Scalar> name(decision);
+    capped = imposed_or(decision, spec.mu >= limit);
+  }
+  out.regime = capped ? Regime::capped : Regime::sliding;
+  if (capped && on_cir) {  // the CIR's rows: no sliding along the plane's axis (eq 19)
+    out.rows.zero_rows = "Wach capped at its CIR, no sliding along its plane's axis (eqs 19, 21)";
+    if (has_warning(out.codes, WarningCode::plane_undefined)) out.rows.t_zero = true;  // the axis is +-t
+    else out.rows.along_plane_zero = true;
+  }
+  out.mu = capped ? limit : spec.mu;
+  flag_if_negative_ratio(out, *out.mu, "impulse ratio");
+  const auto P = Engine::try_plane_impulse(p, ax, *out.mu);
+  if (!P) return {"wach (eqs 18, 22)"};
+  out.P_C = *P;
+  return {};
+}
+
+}  // namespace impact3d::strategies

@@ -1,6 +1,0 @@
-// dual_analysis.hpp's one instantiation.
-#include "impact3d/numeric/dual_analysis.hpp"
-
-namespace impact3d {
-template Analysis<Dual> analyze(const Scene<Dual>&, const std::vector<Strategy<Dual>>&, Engine);
-}  // namespace impact3d

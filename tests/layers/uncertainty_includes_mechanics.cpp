@@ -1,0 +1,2 @@
+// Must not compile: impact3d::uncertainty sees no header of impact3d::mechanics, a layer above it.
+#include "impact3d/mechanics/problem.hpp"
