@@ -72,7 +72,7 @@ TEST_CASE("picked spans read as the parser's values at their paths, and writing 
     if (e.path().extension() != ".json") continue;
     const CaseSpec spec = read_case(impact3d::test::read_text(e.path().string()));
     for (const std::string& precision : precision_names())
-    for (const std::string format : {"jsonl", "json"}) {  // one line, and indented
+    for (const Format format : {Format::jsonl, Format::json}) {  // one line, and indented
       const std::string plain = render(spec, precision, {format, 0});
       const json doc = json::parse(plain);
       std::vector<JsonPath> all;
@@ -94,7 +94,7 @@ TEST_CASE("picked spans read as the parser's values at their paths, and writing 
         JsonPick whole(chosen), alone(chosen, true);
         const std::string full = render(spec, precision, {format, 0, impact3d::Engine::generated, &whole});
         const std::string sparse = render(spec, precision, {format, 0, impact3d::Engine::generated, &alone});
-        INFO(e.path().filename().string() << " at " << precision << " as " << format << ", share " << share << (any ? ", any result" : ""));
+        INFO(e.path().filename().string() << " at " << precision << " as " << format_name(format) << ", share " << share << (any ? ", any result" : ""));
         REQUIRE(full == plain);
         REQUIRE(whole.spans().size() == alone.spans().size());
         for (std::size_t i = 0; i < whole.spans().size(); ++i) {

@@ -58,7 +58,7 @@ json solved_at(const std::string& path, double value, const std::vector<Strategy
   CaseSpec spec = v.with(&value);
   spec.strategies = strategies;
   RenderOptions ro;
-  ro.format = "json";
+  ro.format = Format::json;
   return json::parse(render(spec, "double", ro));
 }
 
@@ -213,7 +213,7 @@ std::uint64_t compare_with_solve(const std::string& case_text, const Uncertainty
   for (std::uint64_t i = 0; i < run.samples; ++i) {
     const CaseSpec spec = variants.with(&run.inputs_of[i * inputs]);
     RenderOptions ro;
-    ro.format = "json";
+    ro.format = Format::json;
     std::string problem;
     json doc;
     try {

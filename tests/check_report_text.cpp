@@ -233,7 +233,7 @@ Summary check_summary(const std::string& text, const json& doc) {
 
 std::string render_as(const case_format::CaseSpec& spec, const char* format, std::optional<Units> u) {
   case_format::RenderOptions o;
-  o.format = format;
+  o.format = case_format::parse_format(format).value();
   o.digits = kDigits;
   o.units = u;
   return studies::render(spec, "double", o);

@@ -82,7 +82,7 @@ std::vector<std::string> cells_of(const std::string& text) {
 
 std::string from_document(const CaseSpec& spec, const std::string& precision, RenderOptions o) {
   JsonPick pick = result_csv_pick();
-  o.format = "jsonl";
+  o.format = Format::jsonl;
   o.pick = &pick;
   const std::string document = render(spec, precision, o);
   return result_csv_from_document(document, pick, spec, o.line);
@@ -106,7 +106,7 @@ TEST_CASE("the result CSV written from the analysis is the CSV taken from the wr
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const CaseSpec spec = read_case(cases[i].dump());
       RenderOptions csv;
-      csv.format = "csv";
+      csv.format = Format::csv;
       csv.line = static_cast<long>(i) + 7;
       csv.units = written[i % 4];
       std::string direct;
@@ -122,7 +122,7 @@ TEST_CASE("the result CSV written from the analysis is the CSV taken from the wr
       for (std::size_t at = direct.find('\n'); at != std::string::npos; at = direct.find('\n', at + 1)) ++rows;
       quoted_names += direct.find(",\"") != std::string::npos;
       RenderOptions whole;
-      whole.format = "jsonl";
+      whole.format = Format::jsonl;
       const json parsed = json::parse(render(spec, precision, whole));
       for (const auto& result : parsed.at("results")) {
         with_warnings += !result.at("warnings").empty();

@@ -100,11 +100,11 @@ TEST_CASE("a description is read, echoed in the result, and printed escaped like
   text.insert(1, R"("name": "a\u001b[31mred", "description": "line one\nline two", )");
   const case_format::CaseSpec c = case_format::read_case(text);
   CHECK(c.description == "line one\nline two");
-  const std::string report = studies::render(c, "double", {"text"});
+  const std::string report = studies::render(c, "double", {case_format::Format::text});
   CHECK(report.find("impact3d: a\\x1B[31mred (units SI") != std::string::npos);
   CHECK(report.find("line one\\nline two\n") != std::string::npos);
   CHECK(report.find('\x1b') == std::string::npos);
-  const std::string json = studies::render(c, "double", {"json"});
+  const std::string json = studies::render(c, "double", {case_format::Format::json});
   CHECK(json.find(R"("description": "line one\nline two")") != std::string::npos);
   // A description that is not a string is an error at its path.
   std::string bad = minimal();

@@ -159,7 +159,7 @@ TEST_CASE("output units: km/h and mph from an SI case, SI from a US case", "[rec
   const case_format::CaseSpec si = case_format::read_case(central_case());
   const auto json_in = [&](const case_format::CaseSpec& spec, std::optional<Units> u) {
     case_format::RenderOptions o;
-    o.format = "json";
+    o.format = case_format::Format::json;
     o.units = u;
     return nlohmann::json::parse(studies::render(spec, "double", o));
   };

@@ -28,7 +28,7 @@ struct Fixture {
       analyze(case_format::to_scene<mp::float100>(spec), case_format::to_strategies<mp::float100>(spec), Engine::generated);
   std::string certified = [&] {
     case_format::RenderOptions o;
-    o.format = "json";
+    o.format = case_format::Format::json;
     return studies::render(spec, "certified", o);
   }();
 

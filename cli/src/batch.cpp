@@ -195,10 +195,10 @@ std::string rejected_row(long line, const std::string& problem, const Formats& f
 // The result document as the output wants it: one JSON line with "line" first, or CSV rows.
 Solved answer(const case_format::CaseSpec& spec, const BatchOptions& o, long line, const Formats& f) {
   case_format::RenderOptions ro;
-  ro.format = "jsonl";
+  ro.format = case_format::Format::jsonl;
   ro.engine = o.engine;
   if (!f.csv_out) return with_line(studies::render(spec, o.precision, ro), line);
-  ro.format = "csv";
+  ro.format = case_format::Format::csv;
   ro.line = line;
   return {studies::render(spec, o.precision, ro), true};
 }

@@ -342,7 +342,7 @@ int main(int argc, char** argv) {
   if (compare_cmd->parsed()) return guarded("", [&] { return impact3d::verification::compare(reference, other, copt); });
   if (digits == 0 && precision == "double") digits = 10;
   impact3d::case_format::RenderOptions ro;
-  ro.format = format;
+  ro.format = *impact3d::case_format::parse_format(format);  // CLI11 took it from the list
   ro.digits = digits;
   ro.engine = engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
   if (!units.empty()) ro.units = impact3d::units_named(units);

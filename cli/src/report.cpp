@@ -90,7 +90,7 @@ std::string report(const ReportOptions& o) {
     }
   }
   case_format::RenderOptions r;
-  r.format = "html";
+  r.format = case_format::Format::html;
   r.digits = o.digits == 0 && o.precision == "double" ? 10 : o.digits;
   r.engine = o.engine;
   r.units = o.units;

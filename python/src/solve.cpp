@@ -30,7 +30,7 @@ void replace_strategies(case_format::CaseSpec& spec, const std::vector<std::stri
 std::string solve_json(const Case& c, const std::vector<std::string>& strategies, const std::string& engine,
                        const std::string& precision, const std::optional<std::string>& units) {
   case_format::RenderOptions o;
-  o.format = "json";
+  o.format = case_format::Format::json;
   o.engine = engine_named(engine);
   if (const std::string problem = studies::precision_problem(precision); !problem.empty())
     throw std::invalid_argument("precision: " + problem);

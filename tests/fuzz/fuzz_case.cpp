@@ -69,7 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const case_format::CaseError&) {
   } catch (const SolveError&) {
   }
-  for (const char* format : {"json", "text"}) {
+  for (const auto format : {case_format::Format::json, case_format::Format::text}) {
     try {
       case_format::RenderOptions o;
       o.format = format;

@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
       }
       // The default certified precision first; where a ball is too wide to prove a digit, more bits.
       case_format::RenderOptions certified;
-      certified.format = "json";
+      certified.format = case_format::Format::json;
       verification::ReferenceProof proof;
       for (const char* precision : {"certified", "certified:512", "certified:1024", "certified:2048", "certified:4096"}) {
         proof = verification::prove_reference(

@@ -32,10 +32,10 @@ std::string render(const CaseSpec& spec, const RenderOptions& o) {
     in_units.units = *o.units;
     shown = &in_units;
   }
-  if (o.format == "csv") return result_csv_rows(*shown, a, precision, o.line);
-  if (o.format == "json" || o.format == "jsonl") return result_json(*shown, a, precision, 0, false, {}, o.format == "jsonl", o.pick);
+  if (o.format == Format::csv) return result_csv_rows(*shown, a, precision, o.line);
+  if (is_json(o.format)) return result_json(*shown, a, precision, 0, false, {}, o.format == Format::jsonl, o.pick);
   const int digits = o.digits > 0 ? o.digits : std::numeric_limits<Scalar>::digits10;
-  if (o.format == "html") return report_html(*shown, a, precision, digits, o.figures ? *o.figures : std::vector<ReportFigure>{}, o.figures_note);
+  if (o.format == Format::html) return report_html(*shown, a, precision, digits, o.figures ? *o.figures : std::vector<ReportFigure>{}, o.figures_note);
   return report_text(*shown, a, precision, digits);
 }
 

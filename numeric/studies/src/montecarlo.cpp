@@ -259,7 +259,7 @@ class Worker {
   void solve_document(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
     pick_.clear();
     RenderOptions ro;
-    ro.format = "jsonl";
+    ro.format = Format::jsonl;
     ro.engine = o_.engine;
     ro.pick = &pick_;
     ro.warning_codes = &codes_;

@@ -44,18 +44,18 @@ std::string render(const CaseSpec& spec, std::string_view precision, const Rende
   if (o.units && *o.units != spec.units && precision == "exact")
     // Exact results are fractions of the case's own units; deg/s and km/h would make them irrational.
     throw CaseError("--units", fmt::format("exact results are written in the case's units ({})", units_name(spec.units)));
-  if (o.format == "html" && precision == "exact")
+  if (o.format == Format::html && precision == "exact")
     throw CaseError("--precision", "the HTML report is written at a floating precision; exact results: impact3d solve --precision exact");
 #if IMPACT3D_MULTIPRECISION
-  if (o.format == "csv" && certified_bits(precision))
+  if (o.format == Format::csv && certified_bits(precision))
     throw CaseError("--format", "CSV results are written at a floating precision or exact; certified results: impact3d solve --precision certified");
-  if (o.format == "csv" && precision == "exact") {
+  if (o.format == Format::csv && precision == "exact") {
     // render_exact writes the document, fractions beside the 100-digit values: the cells are taken from
     // it as it is written.
     thread_local JsonPick pick = result_csv_pick();  // kept from case to case: no allocation once warm
     pick.clear();
     RenderOptions as_json = o;
-    as_json.format = "jsonl";
+    as_json.format = Format::jsonl;
     as_json.pick = &pick;
     const std::string document = render(spec, precision, as_json);
     return result_csv_from_document(document, pick, spec, o.line);

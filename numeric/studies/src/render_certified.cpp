@@ -188,7 +188,7 @@ std::optional<long> certified_bits(std::string_view precision) {
 }
 
 std::string render_certified(const CaseSpec& spec, long bits, const RenderOptions& o) {
-  if (o.format == "html")
+  if (o.format == Format::html)
     throw CaseError("--precision", "the HTML report is written at a floating precision; certified results: impact3d solve "
                                    "--precision certified");
   CaseSpec in_units;
@@ -242,7 +242,7 @@ std::string render_certified(const CaseSpec& spec, long bits, const RenderOption
   const CertifiedAnalysis& x = *shown_run;
   const BallBits precision(x.bits);  // the digits printed are those of the run shown
   const std::string label = "certified:" + std::to_string(x.bits);
-  if (o.format == "json" || o.format == "jsonl") return certified_json(*shown, x, label, o.format == "jsonl");
+  if (is_json(o.format)) return certified_json(*shown, x, label, o.format == Format::jsonl);
   const TextForm form(BallText::certified);
   return report_text(*shown, x.analysis, label + " (only certified digits are printed)",
                      o.digits > 0 ? o.digits : kCertifiedTextDigits) +

@@ -144,9 +144,9 @@ std::string render_exact(const CaseSpec& spec, const RenderOptions& o) {
   }
   using F = mp::float100;
   const Analysis<F> a = analyze(to_scene<F>(spec), to_strategies<F>(spec), o.engine);
-  if (o.format == "json" || o.format == "jsonl")
+  if (is_json(o.format))
     return result_json(
-        spec, a, "exact", 0, false, [&](JsonWriter& w) { write_exact(w, spec, not_rational, x); }, o.format == "jsonl", o.pick);
+        spec, a, "exact", 0, false, [&](JsonWriter& w) { write_exact(w, spec, not_rational, x); }, o.format == Format::jsonl, o.pick);
   return report_text(spec, a, "exact (100 digits where not rational)", o.digits > 0 ? o.digits : 100) +
          exact_text(spec, not_rational, x);
 }

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "impact3d/case_format/case_spec.hpp"
@@ -14,8 +15,25 @@
 
 namespace impact3d::case_format {
 
+// The forms a result is written in: the text report, the contract's JSON (jsonl: on one line), the HTML
+// page, batch's CSV rows. Parsed once, where the user names one (the program's options, the binding).
+enum class Format { text, json, jsonl, html, csv };
+inline constexpr std::pair<Format, std::string_view> kFormatNames[] = {
+    {Format::text, "text"}, {Format::json, "json"}, {Format::jsonl, "jsonl"}, {Format::html, "html"}, {Format::csv, "csv"}};
+constexpr std::string_view format_name(Format f) {
+  for (const auto& [format, name] : kFormatNames)
+    if (format == f) return name;
+  return {};
+}
+constexpr std::optional<Format> parse_format(std::string_view name) {
+  for (const auto& [format, n] : kFormatNames)
+    if (n == name) return format;
+  return std::nullopt;
+}
+constexpr bool is_json(Format f) { return f == Format::json || f == Format::jsonl; }
+
 struct RenderOptions {
-  std::string format = "text";  // "text" | "json" | "jsonl" (the JSON document on one line) | "html" | "csv"
+  Format format = Format::text;
   int digits = 0;               // text report; 0 = the precision's digits10
   Engine engine = Engine::generated;
   JsonPick* pick = nullptr;  // json, jsonl: where the values it names are written (json_pick.hpp)
