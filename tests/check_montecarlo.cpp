@@ -202,7 +202,7 @@ std::uint64_t compare_with_solve(const std::string& case_text, const Uncertainty
   MonteCarloOptions o;
   o.keep_samples = true;
   o.jobs = 2;
-  o.precision = precision;
+  o.precision = parse_precision(precision);
   const MonteCarloRun run = montecarlo(case_text, u, o);
   CHECK(run.direct == direct);  // the route under test
   std::vector<JsonPath> paths;

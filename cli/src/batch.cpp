@@ -186,6 +186,7 @@ Solved with_line(std::string doc, long line) {
 struct Formats {
   const csv::CaseColumns* columns = nullptr;  // null: JSON Lines in
   bool csv_out = false;
+  studies::PrecisionChoice precision;  // --precision, parsed once
 };
 
 std::string rejected_row(long line, const std::string& problem, const Formats& f) {
@@ -197,10 +198,10 @@ Solved answer(const case_format::CaseSpec& spec, const BatchOptions& o, long lin
   case_format::RenderOptions ro;
   ro.format = case_format::Format::jsonl;
   ro.engine = o.engine;
-  if (!f.csv_out) return with_line(studies::render(spec, o.precision, ro), line);
+  if (!f.csv_out) return with_line(studies::render(spec, f.precision, ro), line);
   ro.format = case_format::Format::csv;
   ro.line = line;
-  return {studies::render(spec, o.precision, ro), true};
+  return {studies::render(spec, f.precision, ro), true};
 }
 
 Solved solve_row(const Row& row, const BatchOptions& o, const std::vector<case_format::StrategySpec>& strategies, const Formats& f) {
@@ -311,6 +312,7 @@ int batch(const BatchOptions& o) {
   bool output_lost = false, internal = false;
   Formats formats;
   formats.csv_out = o.format == "csv";
+  formats.precision = studies::parse_precision(o.precision);
   std::optional<csv::CaseColumns> columns;
   if (csv_input(o)) {  // the first line that is not blank is the header
     Row header;

@@ -100,7 +100,7 @@ std::string tolerance_problem(const std::string& text) {
 }
 
 // The strategies of the case or the command line.
-int solve(const std::string& case_path, const std::vector<std::string>& strategies, const std::string& precision,
+int solve(const std::string& case_path, const std::vector<std::string>& strategies, const impact3d::studies::PrecisionChoice& precision,
           const impact3d::case_format::RenderOptions& options) {
   using namespace impact3d;
   return guarded(case_path, [&] {
@@ -346,5 +346,6 @@ int main(int argc, char** argv) {
   ro.digits = digits;
   ro.engine = engine == "direct" ? impact3d::Engine::direct : impact3d::Engine::generated;
   if (!units.empty()) ro.units = impact3d::units_named(units);
-  return solve(case_path, strategies, precision, ro);
+  // --precision was checked against precision_problem: parsed here, once.
+  return solve(case_path, strategies, impact3d::studies::parse_precision(precision), ro);
 }

@@ -24,7 +24,7 @@ namespace impact3d::cli {
 
 int montecarlo(const MonteCarloCliOptions& o) {
   studies::MonteCarloOptions mo;
-  mo.precision = o.precision;
+  mo.precision = studies::parse_precision(o.precision);
   mo.engine = o.engine;
   mo.jobs = o.jobs;
   if (o.strategies.size() > case_format::limits::kStrategies)

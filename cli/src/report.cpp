@@ -96,7 +96,7 @@ std::string report(const ReportOptions& o) {
   r.units = o.units;
   r.figures = &figures;
   r.figures_note = note;
-  const std::string page = studies::render(spec, o.precision, r);
+  const std::string page = studies::render(spec, studies::parse_precision(o.precision), r);
   out.write(page);
   out.commit();
   return o.out_file + "\n";

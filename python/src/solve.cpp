@@ -34,6 +34,7 @@ std::string solve_json(const Case& c, const std::vector<std::string>& strategies
   o.engine = engine_named(engine);
   if (const std::string problem = studies::precision_problem(precision); !problem.empty())
     throw std::invalid_argument("precision: " + problem);
+  const studies::PrecisionChoice p = studies::parse_precision(precision);  // the name is one it takes
   if (units) {
     o.units = units_named(*units);
     if (!o.units) throw std::invalid_argument(fmt::format("units: SI, US or metric-kmh, not {}", case_format::printable(*units)));
@@ -42,7 +43,7 @@ std::string solve_json(const Case& c, const std::vector<std::string>& strategies
     case_format::CaseSpec spec = c.spec;
     replace_strategies(spec, strategies);
     try {
-      return studies::render(spec, precision, o);
+      return studies::render(spec, p, o);
     } catch (const SolveError& e) {
       throw case_format::no_solution(spec, e);  // named by the strategy's path, as the CLI names it
     }

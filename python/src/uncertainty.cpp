@@ -60,7 +60,9 @@ py::tuple montecarlo(const Case& c, const Uncertainty& u, const std::vector<std:
     throw std::invalid_argument(fmt::format("samples: from 1 to {}, not {}", case_format::kMaxSamples, *samples));
   if (jobs > kMaxJobs) throw std::invalid_argument(fmt::format("jobs: at most {}, not {}", kMaxJobs, jobs));
   studies::MonteCarloOptions o;
-  o.precision = precision;
+  if (const std::string problem = studies::precision_problem(precision); !problem.empty())
+    throw std::invalid_argument("precision: " + problem);  // as solve says it
+  o.precision = studies::parse_precision(precision);
   o.engine = engine_named(engine);
   o.jobs = jobs;
   o.keep_samples = keep;

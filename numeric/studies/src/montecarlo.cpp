@@ -211,7 +211,7 @@ class Worker {
     if (slots_.empty()) return false;
     for (double v : values_)
       if (!std::isfinite(v) || (v != 0 && (std::fabs(v) < 1e-99 || std::fabs(v) > kFar))) return false;
-    const bool text = o_.precision != "double";
+    const bool text = o_.precision != PrecisionChoice(floating_precision<double>());
     char buf[32];
     for (std::size_t j = 0; j < slots_.size(); ++j) {
       slots_[j]->value = values_[j];
@@ -223,7 +223,7 @@ class Worker {
  private:
   // Results first .. first + count of sample i, where `spec`'s strategies are those results.
   void solve(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
-    if (o_.precision == "double") solve_direct(i, spec, first, count);
+    if (o_.precision == PrecisionChoice(floating_precision<double>())) solve_direct(i, spec, first, count);
     else solve_document(i, spec, first, count);
   }
 
@@ -356,7 +356,7 @@ std::uint64_t run_bytes_per_sample(std::size_t results, std::size_t inputs, bool
 }
 
 MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u, const MonteCarloOptions& o) {
-  if (o.precision == "exact") throw CaseError("--precision", "Monte Carlo runs at a floating-point precision, not exact");
+  if (std::holds_alternative<ExactPrecision>(o.precision)) throw CaseError("--precision", "Monte Carlo runs at a floating-point precision, not exact");
   std::vector<JsonPath> paths;
   std::vector<std::string> where;
   for (std::size_t i = 0; i < u.inputs.size(); ++i) {
@@ -390,7 +390,7 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   MonteCarloRun run;
   run.samples = u.samples;
   run.seed = u.seed;
-  run.precision = o.precision;
+  run.precision = precision_label(o.precision);
   for (const auto& in : u.inputs) run.inputs.push_back(in.path_text);
   run.direct = !direct.empty();
   run.units = variants.base().units;

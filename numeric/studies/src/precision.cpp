@@ -1,4 +1,4 @@
-// A result rendered for a precision named by the user: one of the scalar list, or exact.
+// A result rendered at a precision the user named: a scalar of the list, exact or certified.
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -22,34 +22,53 @@ std::vector<std::string> precision_names() {
   return names;
 }
 
-std::string precision_problem(std::string_view precision) {
-  for (const auto& name : precision_names())
-    if (name == precision) return "";
+std::string precision_problem(std::string_view name) {
+  for (const auto& p : kPrecisions)
+    if (p.name == name) return "";
 #if IMPACT3D_MULTIPRECISION
+  if (name == "exact") return "";
   try {
-    if (certified_bits(precision)) return "";
+    if (certified_bits(name)) return "";
   } catch (const CaseError& e) {
     return e.what();
   }
 #endif
   std::string list;
-  for (const auto& name : precision_names()) list += (list.empty() ? "" : ", ") + name;
+  for (const auto& n : precision_names()) list += (list.empty() ? "" : ", ") + n;
 #if IMPACT3D_MULTIPRECISION
   list += ", certified, certified:BITS";
 #endif
   return "not a precision (" + list + ")";
 }
 
-std::string render(const CaseSpec& spec, std::string_view precision, const RenderOptions& o) {
-  if (o.units && *o.units != spec.units && precision == "exact")
+PrecisionChoice parse_precision(std::string_view name) {
+  for (std::size_t i = 0; i < kScalarCount; ++i)
+    if (kPrecisions[i].name == name) return FloatingPrecision{i};
+#if IMPACT3D_MULTIPRECISION
+  if (name == "exact") return ExactPrecision{};
+  if (const auto bits = certified_bits(name)) return CertifiedPrecision{*bits};
+#endif
+  throw CaseError("--precision", precision_problem(name));
+}
+
+std::string precision_label(const PrecisionChoice& p) {
+  if (const auto* f = std::get_if<FloatingPrecision>(&p)) return std::string(kPrecisions[f->index].name);
+  if (std::holds_alternative<ExactPrecision>(p)) return "exact";
+  const long bits = std::get<CertifiedPrecision>(p).bits;
+  return bits ? fmt::format("certified:{}", bits) : "certified";
+}
+
+std::string render(const CaseSpec& spec, const PrecisionChoice& precision, const RenderOptions& o) {
+  const bool exact = std::holds_alternative<ExactPrecision>(precision);
+  if (o.units && *o.units != spec.units && exact)
     // Exact results are fractions of the case's own units; deg/s and km/h would make them irrational.
     throw CaseError("--units", fmt::format("exact results are written in the case's units ({})", units_name(spec.units)));
-  if (o.format == Format::html && precision == "exact")
+  if (o.format == Format::html && exact)
     throw CaseError("--precision", "the HTML report is written at a floating precision; exact results: impact3d solve --precision exact");
 #if IMPACT3D_MULTIPRECISION
-  if (o.format == Format::csv && certified_bits(precision))
+  if (o.format == Format::csv && std::holds_alternative<CertifiedPrecision>(precision))
     throw CaseError("--format", "CSV results are written at a floating precision or exact; certified results: impact3d solve --precision certified");
-  if (o.format == Format::csv && precision == "exact") {
+  if (o.format == Format::csv && exact) {
     // render_exact writes the document, fractions beside the 100-digit values: the cells are taken from
     // it as it is written.
     thread_local JsonPick pick = result_csv_pick();  // kept from case to case: no allocation once warm
@@ -60,17 +79,14 @@ std::string render(const CaseSpec& spec, std::string_view precision, const Rende
     const std::string document = render(spec, precision, as_json);
     return result_csv_from_document(document, pick, spec, o.line);
   }
-  if (precision == "exact") return render_exact(spec, o);
-  if (const auto bits = certified_bits(precision)) return render_certified(spec, *bits, o);
+  if (exact) return render_exact(spec, o);
+  if (const auto* c = std::get_if<CertifiedPrecision>(&precision)) return render_certified(spec, c->bits, o);
 #endif
+  const std::size_t index = std::get<FloatingPrecision>(precision).index;
   std::string out;
-  bool found = false;
-  for_each_scalar([&]<typename Scalar>(std::type_identity<Scalar>) {
-    if (precision_name<Scalar> != precision) return;
-    out = render<Scalar>(spec, o);
-    found = true;
+  for_each_scalar_index([&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
+    if (I == index) out = render<ScalarAt<I>>(spec, o);
   });
-  if (!found) throw std::invalid_argument("no precision named " + std::string(precision));
   return out;
 }
 

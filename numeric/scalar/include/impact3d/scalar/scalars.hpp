@@ -50,6 +50,13 @@ inline constexpr std::string_view precision_name = {};
 IMPACT3D_SCALARS(IMPACT3D_SCALAR_NAME_)
 #undef IMPACT3D_SCALAR_NAME_
 
+// f(std::integral_constant<std::size_t, I>{}) for each index I of the list, in order.
+template <typename F>
+constexpr void for_each_scalar_index(F&& f) {
+  [&]<std::size_t... I>(std::index_sequence<I...>) { (f(std::integral_constant<std::size_t, I>{}), ...); }(
+      std::make_index_sequence<kScalarCount>{});
+}
+
 // f(std::type_identity<Scalar>{}) for each scalar of the list, in order.
 template <typename F>
 void for_each_scalar(F&& f) {

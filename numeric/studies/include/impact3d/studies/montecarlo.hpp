@@ -15,6 +15,7 @@
 
 #include "impact3d/case_format/case_spec.hpp"
 #include "impact3d/case_format/result_outputs.hpp"
+#include "impact3d/studies/precision.hpp"
 #include "impact3d/case_format/read_uncertainty.hpp"
 #include "impact3d/mechanics/problem.hpp"
 #include "impact3d/mechanics/strategy.hpp"
@@ -36,7 +37,7 @@ inline constexpr std::array<std::string_view, 8> kWarningNames{"tensile normal i
 inline constexpr std::array<std::string_view, 4> kRegimeNames{"full", "sliding", "capped", "as-given"};
 
 struct MonteCarloOptions {
-  std::string precision = "double";  // a name of precision_names() other than "exact"
+  PrecisionChoice precision = floating_precision<double>();  // not exact
   Engine engine = Engine::generated;
   unsigned jobs = 0;                       // threads; 0: every core
   std::vector<StrategySpec> strategies;    // replace the case's, when not empty
