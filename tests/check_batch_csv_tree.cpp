@@ -76,7 +76,7 @@ Routes routes(const CaseColumns& columns, const std::string& line) {
 }  // namespace
 
 // Known rows, each built or left to the text for a reason the JSON reader's fast route has
-// (io/json_tree.cpp): a "-0" integer read as 0, literals beyond the limits or a double's range, text that
+// (case_format/src/json_tree.cpp): a "-0" integer read as 0, literals beyond the limits or a double's range, text that
 // is not UTF-8.
 TEST_CASE("exam: rows built from their cells, and rows left to the text") {
   const CaseColumns columns("a,b[0],b[1],c.d");

@@ -145,7 +145,7 @@ void emit(const Node& n, const std::vector<Cell>& cells, std::string& out) {
   }
 }
 
-// What the fast route of case_format::parse_json_tree does with case_json's text (io/json_tree.cpp, Walk), done
+// What the fast route of case_format::parse_json_tree does with case_json's text (case_format/src/json_tree.cpp, Walk), done
 // on the cells: the same values counted in the same order against the same limits, a number's literal
 // and value as that reader takes them. Whatever it would hand to the checking parser, this refuses.
 class TreeBuilder {

@@ -1,6 +1,4 @@
 // A result rendered at a precision the user named: a scalar of the list, exact or certified.
-#include <stdexcept>
-
 #include <fmt/format.h>
 
 #include "render_certified.hpp"

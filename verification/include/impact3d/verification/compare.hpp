@@ -6,7 +6,7 @@
 namespace impact3d::verification {
 
 // The default tolerances: a user's choice for another tool's results, not a rounding bound (those are
-// impact3d/numeric/rounding.hpp's).
+// impact3d/mechanics/rounding.hpp's).
 inline constexpr double kDefaultRtol = 1e-9;
 inline constexpr double kDefaultAtol = 1e-9;
 

@@ -91,7 +91,7 @@ class DecisionRecording {
 
 // A branch imposed on a named decision, for every scalar type, while an ImposeBranch holds it on the
 // thread: a reconstruction fits each regime's model on its own, then checks that the regime it imposed
-// is the one the fitted inputs decide (io/reconstruct.hpp). Names compare by address: each is one
+// is the one the fitted inputs decide (studies/reconstruct.hpp). Names compare by address: each is one
 // inline array.
 struct ImposedBranch {
   const char* name = nullptr;

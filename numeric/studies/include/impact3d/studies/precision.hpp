@@ -1,6 +1,6 @@
-// A read case solved at a precision named by the user and written as render<Scalar> writes it: a
-// floating scalar of the list (impact3d/case_format/render.hpp) or, with the multiprecision scalars,
-// exact (fractions) or certified (Arb's balls).
+// A read case solved at a precision named by the user and written as case_format/render.hpp's
+// render<Scalar> writes it: a floating scalar of the list (scalar/scalars.hpp) or, with the
+// multiprecision scalars, exact (fractions) or certified (Arb's balls).
 #pragma once
 
 #include <string>
@@ -36,7 +36,8 @@ using PrecisionChoice = std::variant<FloatingPrecision, ExactPrecision, Certifie
 // The floating precision of `Scalar`, a scalar of the list.
 template <typename Scalar>
 constexpr FloatingPrecision floating_precision() {
-  std::size_t index = kScalarCount;
+  static_assert(!precision_name<Scalar>.empty(), "not a scalar of the list (scalar_list.hpp)");
+  std::size_t index = 0;
   for_each_scalar_index([&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
     if (std::is_same_v<ScalarAt<I>, Scalar>) index = I;
   });
