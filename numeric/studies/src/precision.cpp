@@ -20,25 +20,6 @@ std::vector<std::string> precision_names() {
   return names;
 }
 
-std::string precision_problem(std::string_view name) {
-  for (const auto& p : kPrecisions)
-    if (p.name == name) return "";
-#if IMPACT3D_MULTIPRECISION
-  if (name == "exact") return "";
-  try {
-    if (certified_bits(name)) return "";
-  } catch (const CaseError& e) {
-    return e.what();
-  }
-#endif
-  std::string list;
-  for (const auto& n : precision_names()) list += (list.empty() ? "" : ", ") + n;
-#if IMPACT3D_MULTIPRECISION
-  list += ", certified, certified:BITS";
-#endif
-  return "not a precision (" + list + ")";
-}
-
 PrecisionChoice parse_precision(std::string_view name) {
   for (std::size_t i = 0; i < kScalarCount; ++i)
     if (kPrecisions[i].name == name) return FloatingPrecision{i};
@@ -46,7 +27,21 @@ PrecisionChoice parse_precision(std::string_view name) {
   if (name == "exact") return ExactPrecision{};
   if (const auto bits = certified_bits(name)) return CertifiedPrecision{*bits};
 #endif
-  throw CaseError("--precision", precision_problem(name));
+  std::string list;
+  for (const auto& n : precision_names()) list += (list.empty() ? "" : ", ") + n;
+#if IMPACT3D_MULTIPRECISION
+  list += ", certified, certified:BITS";
+#endif
+  throw CaseError("--precision", "not a precision (" + list + ")");
+}
+
+std::string precision_problem(std::string_view name) {
+  try {
+    (void)parse_precision(name);
+    return "";
+  } catch (const CaseError& e) {
+    return e.what();
+  }
 }
 
 std::string precision_label(const PrecisionChoice& p) {
