@@ -5,6 +5,8 @@
 // midway leaves only whole rows.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -306,17 +308,48 @@ std::string temporary_of(const fs::path& target) {
 TEST_CASE("batch stopped midway by SIGTERM leaves only whole rows, numbered from the first", "[batch]") {
   const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-kill-{}", ::getpid());
   fs::create_directories(dir);
-  const Input in = make_input(dir, 300);
-  const fs::path out_file = dir / "out.jsonl";
-  // Stopped once the first block is written (into the temporary): the handler is installed and some
-  // rows are out. The stopped run puts the file in place, holding the rows written.
-  const Run r = run_program(IMPACT3D_CLI, {"batch", in.path.string(), "-o", out_file.string(), "--jobs", "2"}, "", "", 120,
-                            2048, [&] { return !temporary_of(out_file).empty(); });
+  const Input in = make_input(dir, 2);
+  const fs::path out_file = dir / "out.jsonl", fifo = dir / "cases.fifo";
+  // The input comes through a FIFO holding the first half of the lines and kept open: the program
+  // answers those rows, writes them (a block ends when the input would wait) and waits for more, when
+  // the signal comes. Where the run stands is then known, not raced: it has read exactly these rows.
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  // Held open for writing here, so that the program's open does not wait and its reads never see the end;
+  // non-blocking, so that a program that stopped reading cannot keep the writer waiting.
+  const int feed = ::open(fifo.c_str(), O_RDWR | O_CLOEXEC | O_NONBLOCK);
+  REQUIRE(feed >= 0);
+  const std::size_t fed_lines = in.cases.size() / 2;
+  std::string fed;
+  std::size_t expected = 0;
+  for (std::size_t i = 0; i < fed_lines; ++i) fed += in.cases[i] + "\n", expected += !in.cases[i].empty();
+  REQUIRE(expected >= 20);
+  // From another thread: more than a pipe holds, written as the program reads.
+  std::atomic<bool> ended{false};
+  std::thread writer([&] {
+    for (std::size_t at = 0; at < fed.size() && !ended;) {
+      const ssize_t n = ::write(feed, fed.data() + at, fed.size() - at);
+      if (n > 0) at += static_cast<std::size_t>(n);
+      else if (n < 0 && (errno == EAGAIN || errno == EINTR)) ::usleep(1000);
+      else break;
+    }
+  });
+  auto rows_out = [&] {
+    const std::string t = temporary_of(out_file);
+    return static_cast<std::size_t>(std::count(t.begin(), t.end(), '\n'));
+  };
+  const Run r = run_program(IMPACT3D_CLI, {"batch", "-", "-o", out_file.string(), "--jobs", "2"}, fifo.string(), "", 120,
+                            2048, [&] { return rows_out() >= expected; });
+  ended = true;
+  writer.join();
+  ::close(feed);
   INFO(r.err);
   CHECK(r.status == 128 + SIGTERM);
   CHECK(r.err.find("interrupted") != std::string::npos);
-  const auto rows = lines_of(slurp(out_file));
-  CHECK(rows.size() > 0);
+  // The stopped run puts the file in place, holding the rows written: all those fed, none more.
+  const std::string text = slurp(out_file);
+  CHECK((!text.empty() && text.back() == '\n'));
+  const auto rows = lines_of(text);
+  CHECK(rows.size() == expected);
   CHECK(rows.size() < static_cast<std::size_t>(in.good + in.bad));
   std::size_t line = 0;
   for (const std::string& row : rows) {
