@@ -9,7 +9,9 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -43,35 +45,59 @@ const char* const kVehicleColumns[] = {"mass", "J00", "J01", "J02", "J10", "J11"
                                        "pitch", "roll", "v0",  "v1",  "v2",  "w0",  "w1",  "w2",  "r0",  "r1",  "r2"};
 const char* const kContactColumns[] = {"normal_yaw", "normal_pitch", "tangent_roll", "restitution"};
 
-// The strategies on lanes, and the columns of their ratios.
-using Kind = batch::ColumnStrategy::Kind;
-
+// The strategies (strategies/list.hpp) by name, and the columns of their numbers.
 struct StrategyChoice {
-  batch::ColumnStrategy lanes;  // Brach's ratio columns once the columns are read
-  const char* name = "pc-crash";
+  batch::ColumnStrategy lanes;  // the ratio columns once the columns are read
+  std::string_view name;
+  std::span<const Parameter> parameters;
 };
 
+StrategyChoice kind_at(std::size_t kind) {
+  return with_strategy_index(kind, [&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
+    using Spec = std::variant_alternative_t<I, Strategy<double>>;
+    return StrategyChoice{{I}, Spec::name, Spec::parameters};
+  });
+}
+
 StrategyChoice strategy_of(const std::string& name, const std::optional<std::string>& limit) {
-  StrategyChoice c;
-  Kind& kind = c.lanes.kind;
-  if (name == "pc-crash") kind = Kind::pc_crash;
-  else if (name == "wach") kind = Kind::wach, c.name = "wach";
-  else if (name == "brach") kind = Kind::brach, c.name = "brach";
-  else
-    throw py::value_error(fmt::format("solve_batch: strategy {} is not one of \"pc-crash\", \"wach\", \"brach\"",
-                                      case_format::quoted(name)));
+  std::optional<StrategyChoice> found;
+  std::vector<std::string> names;
+  for (std::size_t k = 0; k < Strategies::size; ++k) {
+    const StrategyChoice c = kind_at(k);
+    names.push_back(fmt::format("\"{}\"", c.name));
+    if (c.name == name) found = c;
+  }
+  if (!found)
+    throw py::value_error(fmt::format("solve_batch: strategy {} is not one of {}", case_format::quoted(name), fmt::join(names, ", ")));
+  StrategyChoice c = *found;
   if (limit) {
-    if (kind != Kind::wach) throw py::value_error(fmt::format("solve_batch: limit is wach's, not {}'s", c.name));
-    if (*limit == "cir") c.lanes.limit = WachLimit::cir;
-    else if (*limit == "gir") c.lanes.limit = WachLimit::gir;
-    else throw py::value_error(fmt::format("solve_batch: limit {} is not \"cir\" or \"gir\"", case_format::quoted(*limit)));
+    // The choice named `limit`: Wach's cap.
+    std::optional<std::size_t> place;
+    for (std::size_t p = 0; p < c.parameters.size(); ++p)
+      if (c.parameters[p].type == ParameterType::choice && c.parameters[p].key == "limit") place = p;
+    if (!place) {
+      std::string_view owner;
+      for (std::size_t k = 0; k < Strategies::size; ++k)
+        for (const Parameter& p : kind_at(k).parameters)
+          if (p.type == ParameterType::choice && p.key == "limit" && owner.empty()) owner = kind_at(k).name;
+      throw py::value_error(fmt::format("solve_batch: limit is {}'s, not {}'s", owner, c.name));
+    }
+    const auto& choices = c.parameters[*place].choices;
+    const auto at = std::find(choices.begin(), choices.end(), *limit);
+    if (at == choices.end())
+      throw py::value_error(fmt::format("solve_batch: limit {} is not \"{}\"", case_format::quoted(*limit),
+                                        fmt::join(choices, "\" or \"")));
+    c.lanes.choice[*place] = static_cast<std::size_t>(at - choices.begin());
   }
   return c;
 }
 
-std::vector<const char*> ratio_columns(Kind k) {
-  if (k == Kind::brach) return {"mu_t", "mu_z"};  // each optional: absent, critical on every row
-  return {"mu"};
+// The columns of a strategy's numbers, by their keys; a choice has none.
+std::vector<const char*> ratio_columns(const StrategyChoice& c) {
+  std::vector<const char*> out;
+  for (const Parameter& p : c.parameters)
+    if (p.type != ParameterType::choice) out.push_back(p.key.data());  // a literal's view: terminated
+  return out;
 }
 
 bool required(const std::string& name) {
@@ -89,15 +115,15 @@ class Columns {
     for (int i = 1; i <= 2; ++i)
       for (const char* c : kVehicleColumns) names.push_back(fmt::format("{}_{}", c, i));
     for (const char* c : kContactColumns) names.emplace_back(c);
-    for (const char* c : ratio_columns(strategy.lanes.kind)) names.emplace_back(c);
+    for (const char* c : ratio_columns(strategy)) names.emplace_back(c);
     for (const auto& [key, value] : given) {
       const std::string name = py::str(key);
       if (std::find(names.begin(), names.end(), name) == names.end()) {
-        for (Kind other : {Kind::pc_crash, Kind::brach})
-          for (const char* ratio : ratio_columns(other))
+        for (std::size_t other = 0; other < Strategies::size; ++other)
+          for (const char* ratio : ratio_columns(kind_at(other)))
             if (name == ratio)
               throw py::type_error(fmt::format("solve_batch: {} is not a column of {} (its ratios: {})", name,
-                                               strategy.name, fmt::join(ratio_columns(strategy.lanes.kind), ", ")));
+                                               strategy.name, fmt::join(ratio_columns(strategy), ", ")));
         throw py::type_error(fmt::format("solve_batch: no column {} (the columns are those of "
                                          "impact3d.BATCH_COLUMNS)", case_format::quoted(name)));
       }
@@ -178,7 +204,7 @@ struct RowCheck {
       if (!(m1 > 0 && m2 > 0 && m3 > 0)) return fmt::format("J_{}: not positive definite", b + 1);
     }
     if (!(in.restitution[i] >= 0 && in.restitution[i] <= 1)) return "restitution: outside [0, 1]";
-    if (in.mu && !(in.mu[i] >= 0)) return "mu: negative";  // brach's ratios are signed
+    if (in.mu && !(in.mu[i] >= 0)) return "mu: negative";  // a ratio is signed
     return {};
   }
 };
@@ -217,16 +243,20 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities, cons
   }
   in.normal_yaw_deg = c["normal_yaw"], in.normal_pitch_deg = c["normal_pitch"], in.tangent_roll_deg = c["tangent_roll"];
   in.restitution = c["restitution"];
-  const bool brach = strategy.lanes.kind == Kind::brach;
-  in.mu = brach ? nullptr : c["mu"];
-  // Brach's ratio columns as given; an absent one is critical on every row.
-  if (brach && c.given("mu_t")) strategy.lanes.mu_t = c["mu_t"];
-  if (brach && c.given("mu_z")) strategy.lanes.mu_z = c["mu_z"];
+  // A non-negative number (mu) is the one column in.mu; a ratio's column as given, an absent one critical
+  // on every row (Brach's).
+  in.mu = nullptr;
+  for (std::size_t p = 0; p < strategy.parameters.size(); ++p) {
+    const Parameter& param = strategy.parameters[p];
+    const std::string key(param.key);
+    if (param.type == ParameterType::non_negative) in.mu = c[key];
+    else if (param.type == ParameterType::ratio_or_critical && c.given(key)) strategy.lanes.ratio[p] = c[key];
+  }
   RowCheck check{in, {}, {}};
   for (int b = 1; b <= 2; ++b)
     for (const char* name : kVehicleColumns) check.named.emplace_back(fmt::format("{}_{}", name, b), nullptr);
   for (const char* name : kContactColumns) check.named.emplace_back(name, nullptr);
-  for (const char* name : ratio_columns(strategy.lanes.kind)) check.named.emplace_back(name, nullptr);
+  for (const char* name : ratio_columns(strategy)) check.named.emplace_back(name, nullptr);
   for (auto& [name, column] : check.named) column = c[name];
   for (int b = 0; b < 2; ++b) {
     const char* lower[3] = {"J10", "J20", "J21"};

@@ -12,6 +12,7 @@
 
 #include "impact3d/case_format/read_case.hpp"
 #include "impact3d/mechanics/exact_analysis.hpp"
+#include "impact3d/mechanics/strategies/list.hpp"
 #include "impact3d/mechanics/rounding.hpp"
 #include "impact3d/scalar/scalars.hpp"
 
@@ -62,16 +63,22 @@ case_format::CaseSpec random_case(std::mt19937_64& g) {
     c.contact.normal_pitch = num(in(-20, 20));
     c.contact.tangent_roll = num(in(-30, 30));
     c.restitution = num(in(0, 1));
-    // Through the table's names, as a case file would give them.
-    auto spec = [&](std::string_view name, std::map<std::string, std::optional<case_format::Number>, std::less<>> numbers,
-                    std::map<std::string, std::string, std::less<>> choices = {}) {
-      return case_format::StrategySpec{*case_format::find_strategy_kind(name), std::move(numbers), std::move(choices), ""};
-    };
-    c.strategies = {spec("pc-crash", {{"mu", num(in(0, 1.2))}}),
-                    spec("wach", {{"mu", num(in(0, 1.2))}}, {{"limit", "cir"}}),
-                    spec("wach", {{"mu", num(in(0, 1.2))}}, {{"limit", "gir"}}),
-                    spec("brach", {{"mu_t", num(in(-0.5, 0.5))}, {"mu_z", num(in(-0.3, 0.3))}}),
-                    spec("brach", {{"mu_t", std::nullopt}, {"mu_z", std::nullopt}})};
+    // Each strategy over the values its entry names (strategies/list.hpp), in the list's order, as a case
+    // file would give them.
+    c.strategies.clear();
+    for_each_strategy([&]<std::size_t I, typename Spec>(std::integral_constant<std::size_t, I>, std::type_identity<Spec>) {
+      for (const auto& draws : Spec::verified) {
+        case_format::StrategySpec st{I, {}, {}, ""};
+        for (std::size_t k = 0; k < Spec::parameters.size(); ++k) {
+          const Parameter& p = Spec::parameters[k];
+          const ParameterDraw& d = draws[k];
+          const std::string key(p.key);
+          if (p.type == ParameterType::choice) st.choices[key] = std::string(d.choice);
+          else st.numbers[key] = d.critical ? std::optional<case_format::Number>() : num(in(d.lo, d.hi));
+        }
+        c.strategies.push_back(std::move(st));
+      }
+    });
     try {
       case_format::to_scene<double>(c);  // approaching?
       return c;

@@ -67,8 +67,11 @@ CertifiedAnalysis certified_analyze(const Scene<Ball>& s, const std::vector<Stra
 }
 
 bool same_result_at_tie(const std::string& decision) {
-  namespace n = decision_names;
-  return decision == n::pc_crash_regime || decision == n::wach_cap_cir || decision == n::wach_cap_gir;
+  bool regime = false;
+  for_each_strategy([&](auto, auto spec) {
+    for (const char* d : decltype(spec)::type::regime_decisions) regime = regime || decision == d;
+  });
+  return regime;
 }
 
 bool chooses_impulse(const std::string& decision) {
@@ -106,20 +109,14 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
                                     const Solution<rational>& exact, const Solution<Ball>& balls) {
   namespace n = decision_names;
   const rational zero(0);
-  // The cap a Wach solution used (eq 19 or 20), where the strategy is Wach's.
-  auto wach_cap = [&]() -> const std::optional<rational>* {
-    const auto* w = std::get_if<Wach<rational>>(&strategy);
-    if (!w) return nullptr;
-    return w->limit == WachLimit::cir ? &exact.impulse.cir : &exact.impulse.gir;
-  };
+  // The limit the strategy's regime decision compares its ratio against (the GIR, or the cap a Wach
+  // solution used, eqs 19-20), where it decides one.
+  const auto decision = regime_decision(strategy);
   auto cap_is_zero = [&]() {
-    const auto* cap = wach_cap();
-    return cap && *cap && **cap == zero;
+    return decision && exact.impulse.*decision->limit && *(exact.impulse.*decision->limit) == zero;
   };
   auto limit_tie = [&]() {
-    if (const auto* pc = std::get_if<PcCrash<rational>>(&strategy)) return exact.impulse.gir && *exact.impulse.gir == pc->mu;
-    const auto* cap = wach_cap();
-    return cap && *cap && **cap == std::get<Wach<rational>>(strategy).mu;
+    return decision && exact.impulse.*decision->limit && *(exact.impulse.*decision->limit) == decision->mu;
   };
   const bool plane_undefined = has_warning(exact.impulse.codes, WarningCode::plane_undefined);
   std::vector<std::string> ties;
@@ -127,14 +124,14 @@ std::vector<std::string> exact_ties(const std::vector<Decision>& decisions, cons
     if (d.status != DecisionStatus::undecided) continue;
     const char* name = d.name.c_str();
     bool tie = false;
-    if (!std::strcmp(name, n::pc_crash_regime) || !std::strcmp(name, n::wach_cap_cir) || !std::strcmp(name, n::wach_cap_gir))
+    if (decision && !std::strcmp(name, decision->decision))
       tie = limit_tie();
     else if (!std::strcmp(name, n::plane_direction))
       tie = plane_undefined;  // exactly, the direction's length is zero
     else if (!std::strcmp(name, n::fallback_direction))
       tie = plane_undefined && cap_is_zero();
     else if (!std::strcmp(name, n::ratio_sign)) {
-      // Wach's alone. A decimal mu's ball is exact or excludes 0, so only a capped ratio is undecided:
+      // Wach's alone (its cap). A decimal mu's ball is exact or excludes 0, so only a capped ratio is undecided:
       // the tie is the cap's, which, exactly zero, the exact solve also caps at (mu >= 0).
       tie = cap_is_zero();
     } else if (!std::strcmp(name, n::normal_impulse_sign))

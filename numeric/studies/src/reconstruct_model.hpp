@@ -16,7 +16,7 @@
 #include "impact3d/case_format/read_evidence.hpp"
 #include "impact3d/studies/reconstruct.hpp"
 #include "impact3d/mechanics/decisions.hpp"
-#include "impact3d/mechanics/strategy.hpp"
+#include "impact3d/mechanics/strategies/list.hpp"
 
 namespace impact3d::studies::reconstruct_model {
 using namespace case_format;  // the studies are written in the case format's terms
@@ -25,17 +25,17 @@ using Vector = Eigen::VectorXd;
 using Matrix = Eigen::MatrixXd;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The two branches of a strategy's regime, as the mechanics name the decision; none for brach.
+// The two branches of a strategy's regime, as the mechanics name the decision; none where the strategy
+// decides no regime from the inputs.
 struct Branches {
   const char* decision = nullptr;
   Regime when_true = Regime::as_given, when_false = Regime::as_given;
 };
 
 inline Branches branches_of(const Strategy<double>& st) {
-  if (std::holds_alternative<PcCrash<double>>(st)) return {decision_names::pc_crash_regime, Regime::full, Regime::sliding};
-  if (const auto* w = std::get_if<Wach<double>>(&st))
-    return {w->limit == WachLimit::cir ? decision_names::wach_cap_cir : decision_names::wach_cap_gir, Regime::capped, Regime::sliding};
-  return {};
+  const auto d = regime_decision(st);
+  if (!d) return {};
+  return {d->decision, d->when_at_most, d->otherwise};
 }
 
 struct Eval {

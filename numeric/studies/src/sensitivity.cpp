@@ -21,16 +21,12 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The deciding quantity of a strategy's regime, limit - mu, with its name; none for brach.
+// The deciding quantity of a strategy's regime, limit - mu, with its name; none where the strategy
+// decides no regime from the inputs.
 std::optional<std::pair<std::string, Dual>> margin(const Strategy<Dual>& st, const ImpulseSolution<Dual>& imp) {
-  if (const auto* pc = std::get_if<PcCrash<Dual>>(&st))
-    if (imp.gir) return std::pair<std::string, Dual>{"gir - mu", Dual(*imp.gir - pc->mu)};
-  if (const auto* w = std::get_if<Wach<Dual>>(&st)) {
-    const bool cir = w->limit == WachLimit::cir;
-    const auto& limit = cir ? imp.cir : imp.gir;
-    if (limit) return std::pair<std::string, Dual>{cir ? "cir - mu" : "gir - mu", Dual(*limit - w->mu)};
-  }
-  return std::nullopt;
+  const auto d = regime_decision(st);
+  if (!d || !(imp.*d->limit)) return std::nullopt;
+  return std::pair<std::string, Dual>{d->margin, Dual(*(imp.*d->limit) - d->mu)};
 }
 
 }  // namespace

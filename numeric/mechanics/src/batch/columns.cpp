@@ -7,7 +7,10 @@
 #include <iterator>
 #include <limits>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
+#include <variant>
 
 #include "impact3d/mechanics/lean.hpp"
 #include "lanes_entry.hpp"
@@ -119,40 +122,66 @@ std::size_t finish(const CollisionColumns& in, const ColumnStrategy& strategy, c
 
 }  // namespace
 
-Strategy<double> ColumnStrategy::row(const CollisionColumns& in, std::size_t i) const {
-  const auto given = [i](const double* column) { return column ? std::optional<double>(column[i]) : std::nullopt; };
-  switch (kind) {
-    case Kind::pc_crash: return PcCrash<double>{in.mu[i]};
-    case Kind::wach: return Wach<double>{in.mu[i], limit};
-    case Kind::brach: break;
+namespace {
+
+static_assert([] {
+  bool fits = true;
+  for_each_strategy([&](auto, auto spec) { fits = fits && decltype(spec)::type::parameters.size() <= ColumnStrategy::kParameters; });
+  return fits;
+}());
+
+// A row's parameter values as a strategy's make reads them.
+struct RowValues {
+  const ColumnStrategy& strategy;
+  std::span<const Parameter> parameters;
+  const CollisionColumns& in;
+  std::size_t i;
+  std::size_t place(std::string_view key) const {
+    std::size_t k = 0;
+    while (k < parameters.size() && parameters[k].key != key) ++k;
+    return k;
   }
-  return Brach<double>{given(mu_t), given(mu_z)};
+  std::optional<double> number(std::string_view key) const {
+    const std::size_t k = place(key);
+    if (parameters[k].type == ParameterType::non_negative) return in.mu[i];
+    const double* column = strategy.ratio[k];
+    return column ? std::optional<double>(column[i]) : std::nullopt;
+  }
+  std::size_t choice_index(std::string_view key) const { return strategy.choice[place(key)]; }
+};
+
+}  // namespace
+
+Strategy<double> ColumnStrategy::row(const CollisionColumns& in, std::size_t i) const {
+  return with_strategy_index(kind, [&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
+    using Spec = std::variant_alternative_t<I, Strategy<double>>;
+    return Strategy<double>(Spec::make(RowValues{*this, Spec::parameters, in, i}));
+  });
 }
 
 std::size_t solve_columns(const CollisionColumns& in, const ColumnStrategy& strategy, const ImpulseColumns& out,
                           std::size_t begin, std::size_t end) {
   const Kernel& k = kernel();
-  std::size_t lanes_end = begin;
-  switch (strategy.kind) {
-    case ColumnStrategy::Kind::pc_crash: lanes_end = k.pc_crash(in, out, begin, end); break;
-    case ColumnStrategy::Kind::wach: lanes_end = k.wach(in, strategy.limit == WachLimit::cir, out, begin, end); break;
-    case ColumnStrategy::Kind::brach: lanes_end = k.brach(in, strategy.mu_t, strategy.mu_z, out, begin, end); break;
-  }
+  std::size_t lanes_end = begin;  // the strategies with a kernel on lanes
+  if (strategy.is<PcCrash<double>>()) lanes_end = k.pc_crash(in, out, begin, end);
+  else if (strategy.is<Wach<double>>())
+    lanes_end = k.wach(in, static_cast<WachLimit>(strategy.choice[1]) == WachLimit::cir, out, begin, end);  // its limit, 2nd
+  else if (strategy.is<Brach<double>>()) lanes_end = k.brach(in, strategy.ratio[0], strategy.ratio[1], out, begin, end);
   return finish(in, strategy, out, begin, lanes_end, end);
 }
 
 std::size_t pc_crash_columns(const CollisionColumns& in, const ImpulseColumns& out, std::size_t begin, std::size_t end) {
-  return solve_columns(in, {}, out, begin, end);
+  return solve_columns(in, {strategy_index<PcCrash<double>>}, out, begin, end);
 }
 
 std::size_t wach_columns(const CollisionColumns& in, WachLimit limit, const ImpulseColumns& out, std::size_t begin,
                          std::size_t end) {
-  return solve_columns(in, {ColumnStrategy::Kind::wach, limit}, out, begin, end);
+  return solve_columns(in, {strategy_index<Wach<double>>, {}, {0, static_cast<std::size_t>(limit)}}, out, begin, end);
 }
 
 std::size_t brach_columns(const CollisionColumns& in, const double* mu_t, const double* mu_z, const ImpulseColumns& out,
                           std::size_t begin, std::size_t end) {
-  return solve_columns(in, {ColumnStrategy::Kind::brach, WachLimit::cir, mu_t, mu_z}, out, begin, end);
+  return solve_columns(in, {strategy_index<Brach<double>>, {mu_t, mu_z}}, out, begin, end);
 }
 
 void sin_cos_deg_columns(const double* deg, double* s, double* c, std::size_t n) {

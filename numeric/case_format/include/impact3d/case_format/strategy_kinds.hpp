@@ -1,10 +1,8 @@
-// The strategy kinds of the case format, one row each: the only place that lists them. A row gives the
-// name in the case file, its keys (kind, and for a choice its values, the first the default), the key a
-// sweep over friction varies, and the conversion to the mechanics' Strategy<Scalar>. The reader, the
-// label of the report, the result's echo, --strategy and `plot` all read this table.
-//
-// Adding a strategy: its mechanics (numeric/strategies/, an alternative of Strategy<Scalar> in
-// strategy.hpp and its branch in lean.hpp's solve_strategy), and a row here.
+// The strategy kinds of the case format: the mechanics' list (strategies/list.hpp) seen by name. A kind
+// gives the name in the case file, its keys (kind, and for a choice its values, the first the default),
+// the key a sweep over friction varies, and the conversion to the mechanics' Strategy<Scalar>. The
+// reader, the label of the report, the result's echo, --strategy and `plot` all read it; none names a
+// strategy.
 #pragma once
 
 #include <array>
@@ -13,26 +11,17 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <tuple>
+#include <variant>
 #include <utility>
 
 #include "impact3d/case_format/case_spec.hpp"
 #include "impact3d/case_format/scalar_text.hpp"
-#include "impact3d/mechanics/strategy.hpp"
+#include "impact3d/mechanics/strategies/list.hpp"
 
 namespace impact3d::case_format {
 
-enum class ParameterType {
-  non_negative,       // a number >= 0
-  ratio_or_critical,  // a number of either sign, or "critical" (stored as an empty number)
-  choice,             // one of `choices`; absent means the first
-};
-
-struct Parameter {
-  std::string_view key;
-  ParameterType type;
-  std::array<std::string_view, 2> choices{};
-};
+using impact3d::Parameter;
+using impact3d::ParameterType;
 
 template <typename Scalar>
 std::optional<Scalar> optional_scalar(const std::optional<Number>& n) {
@@ -40,50 +29,32 @@ std::optional<Scalar> optional_scalar(const std::optional<Number>& n) {
   return to_scalar<Scalar>(*n);
 }
 
-struct PcCrashKind {
-  static constexpr std::string_view name = "pc-crash";
-  static constexpr std::array<Parameter, 1> parameters{{{"mu", ParameterType::non_negative}}};
-  static constexpr std::string_view sweep_key = "mu";
-  template <typename Scalar>
-  static Strategy<Scalar> make(const StrategySpec& s) {
-    return PcCrash<Scalar>{to_scalar<Scalar>(*s.number("mu"))};
+// A spec's values as a strategy's make reads them: numbers in Scalar, a choice by its index.
+template <typename Scalar, typename Spec>
+struct SpecValues {
+  const StrategySpec& s;
+  std::optional<Scalar> number(std::string_view key) const { return optional_scalar<Scalar>(s.number(key)); }
+  std::size_t choice_index(std::string_view key) const {
+    const std::string& c = s.choice(key);
+    for (const Parameter& p : Spec::parameters)
+      if (p.key == key)
+        for (std::size_t i = 0; i < p.choices.size(); ++i)
+          if (p.choices[i] == c) return i;
+    return 0;
   }
 };
 
-struct WachKind {
-  static constexpr std::string_view name = "wach";
-  static constexpr std::array<Parameter, 2> parameters{
-      {{"mu", ParameterType::non_negative}, {"limit", ParameterType::choice, {"cir", "gir"}}}};
-  static constexpr std::string_view sweep_key = "mu";
-  template <typename Scalar>
-  static Strategy<Scalar> make(const StrategySpec& s) {
-    return Wach<Scalar>{to_scalar<Scalar>(*s.number("mu")), s.choice("limit") == "gir" ? WachLimit::gir : WachLimit::cir};
-  }
-};
+inline constexpr std::size_t kStrategyKinds = Strategies::size;
 
-struct BrachKind {
-  static constexpr std::string_view name = "brach";
-  static constexpr std::array<Parameter, 2> parameters{
-      {{"mu_t", ParameterType::ratio_or_critical}, {"mu_z", ParameterType::ratio_or_critical}}};
-  static constexpr std::string_view sweep_key = "mu_t";
-  template <typename Scalar>
-  static Strategy<Scalar> make(const StrategySpec& s) {
-    return Brach<Scalar>{optional_scalar<Scalar>(s.number("mu_t")), optional_scalar<Scalar>(s.number("mu_z"))};
-  }
-};
-
-using StrategyKinds = std::tuple<PcCrashKind, WachKind, BrachKind>;
-inline constexpr std::size_t kStrategyKinds = std::tuple_size_v<StrategyKinds>;
-
-// f(Row{}) for the row `kind` (StrategySpec::kind); every row gives f's result type.
+// f(std::integral_constant<kind>{}) for the kind `kind` (StrategySpec::kind, the index in the list);
+// every kind gives f's result type.
 template <typename F>
 auto with_strategy_kind(std::size_t kind, F&& f) {
-  return [&]<std::size_t... I>(std::index_sequence<I...>) {
-    decltype(f(std::tuple_element_t<0, StrategyKinds>{})) out{};
-    ((kind == I ? (out = f(std::tuple_element_t<I, StrategyKinds>{}), 0) : 0), ...);
-    return out;
-  }(std::make_index_sequence<kStrategyKinds>{});
+  return with_strategy_index(kind, std::forward<F>(f));
 }
+
+template <typename Scalar, std::size_t I>
+using StrategyAt = std::variant_alternative_t<I, Strategy<Scalar>>;
 
 struct KindRow {
   std::string_view name;
@@ -92,8 +63,9 @@ struct KindRow {
 };
 
 inline KindRow strategy_kind(std::size_t kind) {
-  return with_strategy_kind(kind, []<typename Row>(Row) {
-    return KindRow{Row::name, std::span<const Parameter>(Row::parameters), Row::sweep_key};
+  return with_strategy_kind(kind, []<std::size_t I>(std::integral_constant<std::size_t, I>) {
+    using Row = StrategyAt<double, I>;
+    return KindRow{Row::name, std::span<const Parameter>(Row::parameters), Row::friction_key};
   });
 }
 
@@ -135,7 +107,10 @@ inline std::string strategy_label(const StrategySpec& s) {
 
 template <typename Scalar>
 Strategy<Scalar> to_strategy(const StrategySpec& s) {
-  return with_strategy_kind(s.kind, [&]<typename Row>(Row) { return Row::template make<Scalar>(s); });
+  return with_strategy_kind(s.kind, [&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
+    using Spec = StrategyAt<Scalar, I>;
+    return Strategy<Scalar>(Spec::make(SpecValues<Scalar, Spec>{s}));
+  });
 }
 
 }  // namespace impact3d::case_format

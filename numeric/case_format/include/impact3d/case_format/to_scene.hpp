@@ -13,7 +13,7 @@
 #include "impact3d/mechanics/kinematics.hpp"
 #include "impact3d/mechanics/rotation.hpp"
 #include "impact3d/mechanics/rounding.hpp"
-#include "impact3d/mechanics/strategy.hpp"
+#include "impact3d/mechanics/strategies/list.hpp"
 #include "impact3d/mechanics/units.hpp"
 
 namespace impact3d::case_format {

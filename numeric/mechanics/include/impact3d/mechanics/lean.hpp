@@ -18,18 +18,14 @@
 #include "impact3d/mechanics/precision_warnings.hpp"
 #include "impact3d/mechanics/raw_collision.hpp"
 #include "impact3d/scalar/scalars.hpp"
-#include "impact3d/mechanics/strategies/brach.hpp"
-#include "impact3d/mechanics/strategies/pc_crash.hpp"
-#include "impact3d/mechanics/strategies/wach.hpp"
+#include "impact3d/mechanics/strategies/list.hpp"
 
 namespace impact3d {
 
 // A strategy's impulse into `out`; the singular constraint system, if any.
 template <typename E, typename Scalar>
 Singular solve_strategy(const Problem<Scalar>& p, const Strategy<Scalar>& st, ImpulseSolution<Scalar>& out) {
-  if (auto* pc = std::get_if<PcCrash<Scalar>>(&st)) return strategies::pc_crash<E>(p, *pc, out);
-  if (auto* w = std::get_if<Wach<Scalar>>(&st)) return strategies::wach<E>(p, *w, out);
-  return strategies::brach<E>(p, std::get<Brach<Scalar>>(st), out);
+  return std::visit([&](const auto& s) { return s.template solve<E>(p, out); }, st);
 }
 
 enum class Want : std::uint8_t { impulse, velocities };
@@ -70,8 +66,10 @@ LeanSolution<Scalar> solve_lean_with(const Scene<Scalar>& s, const Strategy<Scal
     return out;
   }
   // analyze takes the maximum-energy-loss impulse (eps = 0) for the impulse space before any strategy,
-  // and refuses the case where it is singular. pc-crash's Full Impact has the same matrix.
-  if (!std::holds_alternative<PcCrash<Scalar>>(st) && !E::try_full_impact(p, Scalar(0))) {
+  // and refuses the case where it is singular. A strategy that solves the Full Impact first (pc-crash)
+  // has the same matrix.
+  const bool solves_full_impact = std::visit([](const auto& s) { return s.solves_full_impact; }, st);
+  if (!solves_full_impact && !E::try_full_impact(p, Scalar(0))) {
     out.status = Status::singular;
     out.singular = "full impact";
     return out;
@@ -110,16 +108,7 @@ LeanSolution<Scalar> solve_lean_with(const Scene<Scalar>& s, const Strategy<Scal
   return out;
 }
 
-// A strategy's numbers, or a lean solution's, by f (a scalar to its twin and back, lean_twin.hpp).
-template <typename To, typename From, typename F>
-Strategy<To> convert_strategy(const Strategy<From>& st, F&& f) {
-  auto opt = [&](const std::optional<From>& x) { return x ? std::optional<To>(f(*x)) : std::nullopt; };
-  if (auto* pc = std::get_if<PcCrash<From>>(&st)) return PcCrash<To>{f(pc->mu)};
-  if (auto* w = std::get_if<Wach<From>>(&st)) return Wach<To>{f(w->mu), w->limit};
-  const Brach<From>& b = std::get<Brach<From>>(st);
-  return Brach<To>{opt(b.mu_t), opt(b.mu_z)};
-}
-
+// A lean solution's numbers by f (a scalar to its twin and back, lean_twin.hpp).
 // The velocities only when wanted: else they are zeros on both sides.
 template <typename To, typename From, typename F>
 LeanSolution<To> convert_solution(const LeanSolution<From>& in, Want want, F&& f) {

@@ -1,40 +1,19 @@
-// The constraint strategies of the paper, as specified by the user, and what an engine returns for one.
+// What every strategy shares: the schema of its parameters, its regime decision, and what an engine
+// returns for one. The strategies themselves, one file each, are listed in strategies/list.hpp.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
 #include "impact3d/scalar/types.hpp"
 
 namespace impact3d {
-
-// 3D extension of PC-Crash Full/Sliding Impact (eqs 10-20).
-template <typename Scalar>
-struct PcCrash {
-  Scalar mu;
-};
-
-enum class WachLimit { cir, gir };
-
-// Tangent aligned with the initial sliding velocity (eqs 21-22), ratio capped at the plane's CIR or GIR.
-template <typename Scalar>
-struct Wach {
-  Scalar mu;
-  WachLimit limit = WachLimit::cir;
-};
-
-// Independent impulse ratios (eqs 23-27); an empty ratio means "critical".
-template <typename Scalar>
-struct Brach {
-  std::optional<Scalar> mu_t, mu_z;
-};
-
-template <typename Scalar>
-using Strategy = std::variant<PcCrash<Scalar>, Wach<Scalar>, Brach<Scalar>>;
 
 enum class Regime { full, sliding, capped, as_given };
 
@@ -47,6 +26,27 @@ inline const char* regime_name(Regime r) {
   }
   return "?";
 }
+
+// A strategy's parameters as a case names them; the reader, the echo, --strategy and the sweeps read them.
+enum class ParameterType {
+  non_negative,       // a number >= 0
+  ratio_or_critical,  // a number of either sign, or "critical" (stored as an empty number)
+  choice,             // one of `choices`; absent means the first
+};
+
+struct Parameter {
+  std::string_view key;
+  ParameterType type;
+  std::array<std::string_view, 2> choices{};
+};
+
+// A value verification draws for a parameter (verify.cpp): uniform in [lo, hi], or "critical", or the
+// choice named.
+struct ParameterDraw {
+  double lo = 0, hi = 0;
+  bool critical = false;
+  std::string_view choice{};
+};
 
 enum class WarningCode {
   tensile_normal_impulse,  // P_n <= 0
@@ -111,6 +111,19 @@ struct ImpulseSolution {
     codes |= warning_bit(code);
     if (for_report) warnings.push_back({code, std::string(make_text())});
   }
+};
+
+// How a strategy decides its regime from the inputs, where it does: the decision's name (decisions.hpp),
+// the limit of the solution it compares its ratio `mu` against, and the regime on either side (limit <=
+// mu: when_at_most). Read by the sensitivities (the margin limit - mu), the reconstruction (the branch
+// fitted) and certified rendering (an exact tie).
+template <typename Scalar>
+struct RegimeDecision {
+  const char* decision;
+  const char* margin;  // "gir - mu"
+  std::optional<Scalar> ImpulseSolution<Scalar>::*limit;
+  Scalar mu;
+  Regime when_at_most, otherwise;
 };
 
 // A strategy whose constraints admit no unique impulse names the constraint system that was singular;

@@ -16,6 +16,7 @@
 // sine and cosine and of fused multiply-adds (tests/check_batch.cpp states and checks the bound).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -23,7 +24,7 @@
 
 #include "impact3d/mechanics/batch/sin_cos.hpp"
 #include "impact3d/mechanics/raw_collision.hpp"
-#include "impact3d/mechanics/strategy.hpp"
+#include "impact3d/mechanics/strategies/list.hpp"
 
 namespace impact3d::batch {
 
@@ -61,17 +62,21 @@ std::size_t simd_width();
 std::vector<std::string> simd_available();
 bool use_simd(const std::string& name);
 
-// One strategy for every row, its ratios from columns: pc-crash's and Wach's mu from in.mu (Wach's cap the
-// same for every row), Brach's each from its column, or critical (eqs 25-27) on every row where the
-// column is null (in.mu is then not read).
+// One strategy for every row, `kind` its index in strategies/list.hpp, its parameters by their place in
+// the strategy's list of them: a non-negative one (pc-crash's and Wach's mu) from in.mu, a ratio
+// (Brach's) from its column or, where the column is null, critical (eqs 25-27) on every row, a choice
+// (Wach's cap) the same for every row. A strategy with no kernel on lanes is solved on the scalar path.
 struct ColumnStrategy {
-  enum class Kind : std::uint8_t { pc_crash, wach, brach };
-  Kind kind = Kind::pc_crash;
-  WachLimit limit = WachLimit::cir;
-  const double* mu_t = nullptr;
-  const double* mu_z = nullptr;
+  static constexpr std::size_t kParameters = 2;  // the most any strategy has (checked in columns.cpp)
+  std::size_t kind = 0;
+  std::array<const double*, kParameters> ratio{};
+  std::array<std::size_t, kParameters> choice{};
   // Row i's, for the scalar path.
   Strategy<double> row(const CollisionColumns& in, std::size_t i) const;
+  template <typename Spec>
+  bool is() const {
+    return kind == strategy_index<Spec>;
+  }
 };
 
 // Rows [begin, end) of `in` into the same rows of `out`; returns how many of them the scalar path

@@ -3,8 +3,45 @@
 // The critical ratio of each axis, given the other ratio as used, is reported as a limit.
 #pragma once
 
+#include <array>
+#include <optional>
+#include <string_view>
+
 #include "impact3d/mechanics/problem.hpp"
 #include "impact3d/mechanics/strategies/limits.hpp"
+
+namespace impact3d {
+
+// The strategy's entry: its parameters and its solve (strategies/list.hpp). Independent impulse ratios
+// (eqs 23-27); an empty ratio means "critical". It decides no regime from the inputs.
+template <typename Scalar>
+struct Brach {
+  std::optional<Scalar> mu_t, mu_z;
+
+  static constexpr std::string_view name = "brach";
+  static constexpr std::array<Parameter, 2> parameters{
+      {{"mu_t", ParameterType::ratio_or_critical}, {"mu_z", ParameterType::ratio_or_critical}}};
+  static constexpr std::string_view friction_key = "mu_t";
+  static constexpr std::array<std::array<ParameterDraw, 2>, 2> verified{
+      {{{{-0.5, 0.5}, {-0.3, 0.3}}}, {{{.critical = true}, {.critical = true}}}}};
+  static constexpr bool solves_full_impact = false;
+  static constexpr std::array<const char*, 0> regime_decisions{};
+
+  template <typename Values>
+  static Brach make(const Values& v) {
+    return {v.number("mu_t"), v.number("mu_z")};
+  }
+  template <typename To, typename F>
+  Brach<To> convert(F&& f) const {
+    auto opt = [&](const std::optional<Scalar>& x) { return x ? std::optional<To>(f(*x)) : std::nullopt; };
+    return {opt(mu_t), opt(mu_z)};
+  }
+  std::optional<RegimeDecision<Scalar>> regime_decision() const { return std::nullopt; }
+  template <typename Engine>
+  Singular solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const;
+};
+
+}  // namespace impact3d
 
 namespace impact3d::strategies {
 
@@ -34,3 +71,13 @@ Singular brach(const Problem<Scalar>& p, const Brach<Scalar>& spec, ImpulseSolut
 }
 
 }  // namespace impact3d::strategies
+
+namespace impact3d {
+
+template <typename Scalar>
+template <typename Engine>
+Singular Brach<Scalar>::solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const {
+  return strategies::brach<Engine>(p, *this, out);
+}
+
+}  // namespace impact3d

@@ -7,8 +7,47 @@
 
 #include <cmath>
 
+#include <array>
+#include <optional>
+#include <string_view>
+
 #include "impact3d/mechanics/problem.hpp"
 #include "impact3d/mechanics/strategies/limits.hpp"
+
+namespace impact3d {
+
+// The strategy's entry: its parameters, how it decides its regime, and its solve (strategies/list.hpp).
+template <typename Scalar>
+struct PcCrash {
+  Scalar mu;
+
+  static constexpr std::string_view name = "pc-crash";
+  static constexpr std::array<Parameter, 1> parameters{{{"mu", ParameterType::non_negative}}};
+  static constexpr std::string_view friction_key = "mu";  // the parameter a sweep over friction varies
+  // The values verification checks it over, one row per variant (verify.cpp).
+  static constexpr std::array<std::array<ParameterDraw, 1>, 1> verified{{{{{0, 1.2}}}}};
+  // Its own first step is the Full Impact: it names that system when singular, no check before it.
+  static constexpr bool solves_full_impact = true;
+  // The names its regime decision takes (decisions.hpp): at a tie either branch gives the same impulse.
+  static constexpr std::array<const char*, 1> regime_decisions{decision_names::pc_crash_regime};
+
+  template <typename Values>
+  static PcCrash make(const Values& v) {
+    return {*v.number("mu")};
+  }
+  template <typename To, typename F>
+  PcCrash<To> convert(F&& f) const {
+    return {f(mu)};
+  }
+  std::optional<RegimeDecision<Scalar>> regime_decision() const {
+    return RegimeDecision<Scalar>{regime_decisions[0], "gir - mu", &ImpulseSolution<Scalar>::gir, mu,
+                                  Regime::full, Regime::sliding};
+  }
+  template <typename Engine>
+  Singular solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const;
+};
+
+}  // namespace impact3d
 
 namespace impact3d::strategies {
 
@@ -48,3 +87,13 @@ Singular pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec, Impulse
 }
 
 }  // namespace impact3d::strategies
+
+namespace impact3d {
+
+template <typename Scalar>
+template <typename Engine>
+Singular PcCrash<Scalar>::solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const {
+  return strategies::pc_crash<Engine>(p, *this, out);
+}
+
+}  // namespace impact3d

@@ -2,8 +2,53 @@
 // P_z' = 0, and mu capped at the plane's CIR (eq 19, Wach) or GIR (eq 20, Virtual CRASH guide).
 #pragma once
 
+#include <array>
+#include <optional>
+#include <string_view>
+
 #include "impact3d/mechanics/problem.hpp"
 #include "impact3d/mechanics/strategies/limits.hpp"
+
+namespace impact3d {
+
+enum class WachLimit { cir, gir };  // in the order of the parameter's choices
+
+// The strategy's entry: its parameters, how it decides its regime, and its solve (strategies/list.hpp).
+// Tangent aligned with the initial sliding velocity (eqs 21-22), ratio capped at the plane's CIR or GIR.
+template <typename Scalar>
+struct Wach {
+  Scalar mu;
+  WachLimit limit = WachLimit::cir;
+
+  static constexpr std::string_view name = "wach";
+  static constexpr std::array<Parameter, 2> parameters{
+      {{"mu", ParameterType::non_negative}, {"limit", ParameterType::choice, {"cir", "gir"}}}};
+  static constexpr std::string_view friction_key = "mu";
+  static constexpr std::array<std::array<ParameterDraw, 2>, 2> verified{
+      {{{{0, 1.2}, {.choice = "cir"}}}, {{{0, 1.2}, {.choice = "gir"}}}}};
+  static constexpr bool solves_full_impact = false;
+  static constexpr std::array<const char*, 2> regime_decisions{decision_names::wach_cap_cir, decision_names::wach_cap_gir};
+
+  template <typename Values>
+  static Wach make(const Values& v) {
+    return {*v.number("mu"), static_cast<WachLimit>(v.choice_index("limit"))};
+  }
+  template <typename To, typename F>
+  Wach<To> convert(F&& f) const {
+    return {f(mu), limit};
+  }
+  std::optional<RegimeDecision<Scalar>> regime_decision() const {
+    const bool cir = limit == WachLimit::cir;
+    return RegimeDecision<Scalar>{regime_decisions[cir ? 0 : 1],
+                                  cir ? "cir - mu" : "gir - mu",
+                                  cir ? &ImpulseSolution<Scalar>::cir : &ImpulseSolution<Scalar>::gir, mu,
+                                  Regime::capped, Regime::sliding};
+  }
+  template <typename Engine>
+  Singular solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const;
+};
+
+}  // namespace impact3d
 
 namespace impact3d::strategies {
 
@@ -64,3 +109,13 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
 }
 
 }  // namespace impact3d::strategies
+
+namespace impact3d {
+
+template <typename Scalar>
+template <typename Engine>
+Singular Wach<Scalar>::solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const {
+  return strategies::wach<Engine>(p, *this, out);
+}
+
+}  // namespace impact3d
