@@ -1,5 +1,5 @@
-// The thread `batch` keeps for a whole run (cli/library/include/impact3d/cli/helper_thread.hpp): each task started runs once and
-// is finished when wait() returns, what a task throws comes out of wait() and leaves the thread serving,
+// A thread kept for many tasks (numeric/scalar/include/impact3d/scalar/helper_thread.hpp): each task
+// started runs once and is finished when wait() returns, what a task throws comes out of wait() and leaves the thread serving,
 // and a helper destroyed with a task still running finishes it first. Known answers by counting.
 #include <catch2/catch.hpp>
 
@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <thread>
 
-#include "impact3d/cli/helper_thread.hpp"
+#include "impact3d/scalar/helper_thread.hpp"
 
-using impact3d::cli::HelperThread;
+using impact3d::HelperThread;
 
 TEST_CASE("every task started runs once, and is done when wait returns", "[helper]") {
   HelperThread helper;

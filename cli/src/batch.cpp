@@ -41,7 +41,8 @@
 #include "impact3d/case_format/result_csv.hpp"
 #include "impact3d/case_format/strategy_option.hpp"
 #include "impact3d/cli/batch_csv.hpp"
-#include "impact3d/cli/helper_thread.hpp"
+#include "impact3d/scalar/helper_thread.hpp"
+#include "impact3d/scalar/parallel_chunks.hpp"
 #include "impact3d/cli/output_file.hpp"
 #include "impact3d/cli/row_output.hpp"
 #include "impact3d/cli/user_error.hpp"
@@ -343,14 +344,6 @@ int batch(const BatchOptions& o) {
   std::vector<Solved> results, writing;
   std::size_t to_write = 0;
   bool wrote = true;  // the last write all went out
-  // The rows of the block in hand go to whichever thread asks next; a stop leaves those not yet started.
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    for (std::size_t i; !stop_signal && (i = next.fetch_add(1)) < rows.size();) {
-      results[i] = solve_row(rows[i], o, strategies, formats);
-      done[i] = 1;
-    }
-  };
   // The next block is read by this thread while the others solve the current one (with --jobs 2 or
   // more), as far as whole lines are in hand: the current block's answers never wait for a slow
   // producer. A read error there is kept until the current block is written. Rows read ahead when a
@@ -377,7 +370,10 @@ int batch(const BatchOptions& o) {
     const SignalsToMain mask;
     return std::make_unique<HelperThread>();
   }();
-  std::deque<HelperThread> solvers;
+  ParallelChunks solvers(jobs, [](const std::function<void()>& make) {
+    const SignalsToMain mask;
+    make();
+  });
   auto wait_write = [&] {
     writer_thread->wait();
     if (!wrote) output_lost = true;
@@ -389,22 +385,21 @@ int batch(const BatchOptions& o) {
     if (rows.empty()) break;
     results.assign(rows.size(), {});
     done.assign(rows.size(), 0);
-    next = 0;
-    const std::size_t helpers = std::min<std::size_t>(jobs, rows.size()) - 1;
-    while (solvers.size() < helpers) {
-      const SignalsToMain mask;
-      solvers.emplace_back();
-    }
-    for (std::size_t t = 0; t < helpers; ++t) solvers[t].start(work);
-    if (helpers > 0) {
+    // The rows of the block go to whichever thread asks next; a stop leaves those not yet started.
+    ParallelChunks::Caller reader_ahead;
+    reader_ahead.first = [&](unsigned helpers) {
+      if (helpers == 0) return;
       try {
         read_block(ahead, false);
       } catch (...) {
         ahead_error = std::current_exception();
       }
-    }
-    work();
-    for (std::size_t t = 0; t < helpers; ++t) solvers[t].wait();
+    };
+    solvers.run(rows.size(), 1, [&](unsigned, std::size_t i, std::size_t) {
+      if (stop_signal) return;
+      results[i] = solve_row(rows[i], o, strategies, formats);
+      done[i] = 1;
+    }, reader_ahead);
     std::size_t written = 0;
     for (; written < rows.size() && done[written]; ++written) {  // the finished rows before the first not
       ++(results[written].ok ? solved : rejected);

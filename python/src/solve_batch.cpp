@@ -26,6 +26,7 @@
 #include "impact3d/case_format/limits.hpp"
 #include "impact3d/mechanics/batch/columns.hpp"
 #include "impact3d/mechanics/lean.hpp"
+#include "impact3d/scalar/parallel_chunks.hpp"
 
 namespace py = pybind11;
 
@@ -285,62 +286,40 @@ py::dict solve_batch(const py::dict& given, unsigned jobs, bool velocities, cons
 
   {
     py::gil_scoped_release released;
-    const unsigned threads = std::max(1u, std::min<unsigned>(jobs ? jobs : std::thread::hardware_concurrency(),
-                                                              static_cast<unsigned>((n + kBlock - 1) / kBlock)));
-    std::atomic<std::size_t> next{0};
-    std::vector<std::vector<std::pair<std::size_t, std::string>>> found(threads);
-    std::vector<std::exception_ptr> failed(threads);
+    ParallelChunks pool(jobs);
+    std::vector<std::vector<std::pair<std::size_t, std::string>>> found(pool.jobs());
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    const auto work = [&](unsigned t) {
-      try {
-        for (std::size_t begin; (begin = next.fetch_add(kBlock)) < n;) {
-          const std::size_t end = std::min(n, begin + kBlock);
-          if (velocities) {
-            for (std::size_t i = begin; i < end; ++i) {
-              const LeanSolution<double> r = solve_lean(scene_of(batch::row_of(in, i)), strategy.lanes.row(in, i),
-                                                          Want::velocities);
-              const bool solved = r.status == Status::solved;
-              const Vec3<double>* vectors[5] = {&r.P_W, &r.v_W[0], &r.w_B[0], &r.v_W[1], &r.w_B[1]};
-              for (int k = 0; k < 3; ++k) {
-                out.P_C[k][i] = solved ? r.impulse.P_C(k) : nan;
-                for (int s = 0; s < 5; ++s) state_data[s][3 * i + k] = solved ? (*vectors[s])(k) : nan;
-              }
-              out.status[i] = static_cast<std::uint8_t>(r.status);
-              out.regime[i] = static_cast<std::uint8_t>(r.impulse.regime);
-              out.warnings[i] = r.warnings;
-            }
-          } else {
-            batch::solve_columns(in, strategy.lanes, out, begin, end);
+    pool.run(n, kBlock, [&](unsigned t, std::size_t begin, std::size_t end) {
+      if (velocities) {
+        for (std::size_t i = begin; i < end; ++i) {
+          const LeanSolution<double> r = solve_lean(scene_of(batch::row_of(in, i)), strategy.lanes.row(in, i),
+                                                      Want::velocities);
+          const bool solved = r.status == Status::solved;
+          const Vec3<double>* vectors[5] = {&r.P_W, &r.v_W[0], &r.w_B[0], &r.v_W[1], &r.w_B[1]};
+          for (int k = 0; k < 3; ++k) {
+            out.P_C[k][i] = solved ? r.impulse.P_C(k) : nan;
+            for (int s = 0; s < 5; ++s) state_data[s][3 * i + k] = solved ? (*vectors[s])(k) : nan;
           }
-          for (std::size_t i = begin; i < end; ++i) {
-            // A row that is not a collision is flagged, whatever the arithmetic made of it.
-            if (std::string problem = check(i); !problem.empty()) {
-              found[t].emplace_back(i, std::move(problem));
-              for (int k = 0; k < 3; ++k) out.P_C[k][i] = nan;
-              for (auto* s : state_data)
-                for (int k = 0; k < 3; ++k) s[3 * i + k] = nan;
-              out.status[i] = kInvalid;
-              out.warnings[i] = 0;
-            }
-            if (out.status[i] != static_cast<std::uint8_t>(Status::solved)) out.regime[i] = kNoRegime;
-          }
+          out.status[i] = static_cast<std::uint8_t>(r.status);
+          out.regime[i] = static_cast<std::uint8_t>(r.impulse.regime);
+          out.warnings[i] = r.warnings;
         }
-      } catch (...) {
-        failed[t] = std::current_exception();
-        next = n;  // the others stop at their next block
+      } else {
+        batch::solve_columns(in, strategy.lanes, out, begin, end);
       }
-    };
-    {
-      std::vector<std::jthread> pool;
-      try {
-        for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, t);
-      } catch (const std::system_error&) {
-        // No more threads to be had: those running and this one share the rows.
+      for (std::size_t i = begin; i < end; ++i) {
+        // A row that is not a collision is flagged, whatever the arithmetic made of it.
+        if (std::string problem = check(i); !problem.empty()) {
+          found[t].emplace_back(i, std::move(problem));
+          for (int k = 0; k < 3; ++k) out.P_C[k][i] = nan;
+          for (auto* s : state_data)
+            for (int k = 0; k < 3; ++k) s[3 * i + k] = nan;
+          out.status[i] = kInvalid;
+          out.warnings[i] = 0;
+        }
+        if (out.status[i] != static_cast<std::uint8_t>(Status::solved)) out.regime[i] = kNoRegime;
       }
-      work(0);
-    }  // joined
-    for (const auto& e : failed)
-      if (e) std::rethrow_exception(e);
+    });
     for (auto& f : found) std::move(f.begin(), f.end(), std::back_inserter(problems));
     std::sort(problems.begin(), problems.end());
   }

@@ -31,7 +31,7 @@
 #include "impact3d/studies/montecarlo_linear.hpp"
 #include "impact3d/studies/result_numbers.hpp"
 #include "impact3d/mechanics/analysis.hpp"
-#include "impact3d/scalar/thread_caches.hpp"
+#include "impact3d/scalar/parallel_chunks.hpp"
 #include "impact3d/uncertainty/portable_math.hpp"
 
 namespace impact3d::studies {
@@ -419,46 +419,14 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   std::vector<std::unique_ptr<Worker>> workers;
   for (unsigned j = 0; j < jobs; ++j)
     workers.push_back(std::make_unique<Worker>(variants, sampler, o, results, run, store, reasons_lock, direct));
-  std::atomic<std::uint64_t> next{0}, done{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
-  std::mutex error_lock;
-  auto work = [&](Worker& w) {
-    try {
-      for (;;) {
-        const std::uint64_t first = next.fetch_add(kChunk);
-        if (first >= n || failed) return;
-        const std::uint64_t last = std::min(n, first + kChunk);
-        for (std::uint64_t i = first; i < last; ++i) w.sample(i);
-        done += last - first;
-      }
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(error_lock);
-      if (!error) error = std::current_exception();
-      failed = true;
-    }
-  };
-  fill_shared_before_threads();
   {
-    std::vector<std::jthread> threads;
-    const auto work_in_thread = [&](Worker& w) {
-      const ThreadCaches freed_at_exit;
-      work(w);
-    };
-    for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(work_in_thread, std::ref(*workers[j]));
-    if (o.progress) {  // the calling thread reports
-      std::jthread own(work_in_thread, std::ref(*workers[0]));
-      while (done < n && !failed) {
-        o.progress(done);
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      }
-      own.join();
-      o.progress(done);
-    } else {
-      work(*workers[0]);
-    }
+    ParallelChunks pool(jobs);
+    ParallelChunks::Caller caller;
+    if (o.progress) caller.report = [&](std::size_t done) { o.progress(done); };  // the calling thread reports
+    pool.run(n, kChunk, [&](unsigned t, std::size_t first, std::size_t last) {
+      for (std::size_t i = first; i < last; ++i) workers[t]->sample(i);
+    }, caller);
   }
-  if (error) std::rethrow_exception(error);
 
   std::vector<Tally> tally(results);
   for (auto& t : tally) t.written.assign(outputs, false);
@@ -493,39 +461,20 @@ MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u,
   std::vector<std::pair<std::size_t, OutputSummary*>> todo;  // (result, summary)
   for (std::size_t k = 0; k < results; ++k)
     for (auto& summary : run.results[k].outputs) todo.emplace_back(k, &summary);
-  std::atomic<std::size_t> next_summary{0};
-  auto summarize_some = [&] {
-    std::vector<double> column;
-    column.reserve(n);  // once: grown by push_back, it could take twice the samples
-    for (std::size_t t; (t = next_summary++) < todo.size();) {
-      const auto [k, summary] = todo[t];
-      const OutputPath& out = *summary->output;
-      const double* at = store.data() + (k * outputs + static_cast<std::size_t>(&out - monte_carlo_outputs().data())) * n;
-      column.clear();
-      for (std::uint64_t i = 0; i < n; ++i)
-        if (std::isfinite(at[i])) column.push_back(at[i]);
-      summary->undefined = run.results[k].solved - column.size();
-      summary->summary = out.angle ? uncertainty::summarize_angle_deg(column, out.from_zero) : uncertainty::summarize(column);
-    }
-  };
-  auto summarize = [&] {
-    try {
-      summarize_some();
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(error_lock);
-      if (!error) error = std::current_exception();
-    }
-  };
-  {
-    std::vector<std::jthread> threads;
-    for (unsigned j = 1; j < std::min(jobs, kSummaryThreads); ++j)
-      threads.emplace_back([&] {
-        const ThreadCaches freed_at_exit;
-        summarize();
-      });
-    summarize();
-  }
-  if (error) std::rethrow_exception(error);
+  ParallelChunks summarizers(std::min(jobs, kSummaryThreads));
+  std::vector<std::vector<double>> columns(summarizers.jobs());  // one a thread, reserved once
+  summarizers.run(todo.size(), 1, [&](unsigned thread, std::size_t t, std::size_t) {
+    std::vector<double>& column = columns[thread];
+    if (column.capacity() < n) column.reserve(n);  // grown by push_back, it could take twice the samples
+    const auto [k, summary] = todo[t];
+    const OutputPath& out = *summary->output;
+    const double* at = store.data() + (k * outputs + static_cast<std::size_t>(&out - monte_carlo_outputs().data())) * n;
+    column.clear();
+    for (std::uint64_t i = 0; i < n; ++i)
+      if (std::isfinite(at[i])) column.push_back(at[i]);
+    summary->undefined = run.results[k].solved - column.size();
+    summary->summary = out.angle ? uncertainty::summarize_angle_deg(column, out.from_zero) : uncertainty::summarize(column);
+  });
   if (o.keep_samples) run.outputs_of = std::move(store);
   linearize(run, variants, u, o);
   return run;

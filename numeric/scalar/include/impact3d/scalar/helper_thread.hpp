@@ -1,7 +1,6 @@
-// A thread kept for a whole `batch` run and handed one task at a time (its share of a block's rows, or a
-// block's write): no thread is made per block, and a solving thread keeps its warm thread-local state
-// (the CSV reader's cells and tree, the result pick, the JSON writer's reserve hint) from one block to
-// the next.
+// A thread kept for many tasks and handed one at a time (ParallelChunks's helpers, batch's writer): no
+// thread is made per task, and a thread keeps its warm thread-local state (the CSV reader's cells and
+// tree, the result pick, the JSON writer's reserve hint) from one task to the next.
 #pragma once
 
 #include <condition_variable>
@@ -13,7 +12,7 @@
 
 #include "impact3d/scalar/thread_caches.hpp"
 
-namespace impact3d::cli {
+namespace impact3d {
 
 class HelperThread {
  public:
@@ -76,4 +75,4 @@ class HelperThread {
   std::thread thread_;  // last: it starts once the members above exist
 };
 
-}  // namespace impact3d::cli
+}  // namespace impact3d
