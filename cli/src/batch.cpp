@@ -23,7 +23,6 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
-#include <deque>
 #include <memory>
 #include <optional>
 #include <stdexcept>

@@ -78,9 +78,11 @@ StrategyChoice strategy_of(const std::string& name, const std::optional<std::str
       if (c.parameters[p].type == ParameterType::choice && c.parameters[p].key == "limit") place = p;
     if (!place) {
       std::string_view owner;
-      for (std::size_t k = 0; k < Strategies::size; ++k)
-        for (const Parameter& p : kind_at(k).parameters)
-          if (p.type == ParameterType::choice && p.key == "limit" && owner.empty()) owner = kind_at(k).name;
+      for (std::size_t k = 0; k < Strategies::size && owner.empty(); ++k) {
+        const StrategyChoice other = kind_at(k);
+        for (const Parameter& p : other.parameters)
+          if (p.type == ParameterType::choice && p.key == "limit") owner = other.name;
+      }
       throw py::value_error(fmt::format("solve_batch: limit is {}'s, not {}'s", owner, c.name));
     }
     const auto& choices = c.parameters[*place].choices;

@@ -25,7 +25,7 @@ namespace impact3d {
 // A strategy's impulse into `out`; the singular constraint system, if any.
 template <typename E, typename Scalar>
 Singular solve_strategy(const Problem<Scalar>& p, const Strategy<Scalar>& st, ImpulseSolution<Scalar>& out) {
-  return std::visit([&](const auto& s) { return s.template solve<E>(p, out); }, st);
+  return std::visit([&](const auto& s) { return strategies::solve<E>(p, s, out); }, st);
 }
 
 enum class Want : std::uint8_t { impulse, velocities };

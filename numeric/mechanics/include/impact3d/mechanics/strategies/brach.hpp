@@ -12,8 +12,9 @@
 
 namespace impact3d {
 
-// The strategy's entry: its parameters and its solve (strategies/list.hpp). Independent impulse ratios
-// (eqs 23-27); an empty ratio means "critical". It decides no regime from the inputs.
+// The strategy's entry (strategies/list.hpp): its parameters; its solve is strategies::solve below.
+// Independent impulse ratios (eqs 23-27); an empty ratio means "critical". It decides no regime from the
+// inputs.
 template <typename Scalar>
 struct Brach {
   std::optional<Scalar> mu_t, mu_z;
@@ -37,8 +38,6 @@ struct Brach {
     return {opt(mu_t), opt(mu_z)};
   }
   std::optional<RegimeDecision<Scalar>> regime_decision() const { return std::nullopt; }
-  template <typename Engine>
-  Singular solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const;
 };
 
 }  // namespace impact3d
@@ -47,7 +46,7 @@ namespace impact3d::strategies {
 
 // Fills `out`; returns the singular constraint system, if any (then `out` is incomplete).
 template <typename Engine, typename Scalar>
-Singular brach(const Problem<Scalar>& p, const Brach<Scalar>& spec, ImpulseSolution<Scalar>& out) {
+Singular solve(const Problem<Scalar>& p, const Brach<Scalar>& spec, ImpulseSolution<Scalar>& out) {
   out.regime = Regime::as_given;
   out.rows.t_zero = !spec.mu_t;  // critical: the no-sliding row along t (eqs 25, 27)
   out.rows.z_zero = !spec.mu_z;
@@ -71,13 +70,3 @@ Singular brach(const Problem<Scalar>& p, const Brach<Scalar>& spec, ImpulseSolut
 }
 
 }  // namespace impact3d::strategies
-
-namespace impact3d {
-
-template <typename Scalar>
-template <typename Engine>
-Singular Brach<Scalar>::solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const {
-  return strategies::brach<Engine>(p, *this, out);
-}
-
-}  // namespace impact3d

@@ -2,9 +2,9 @@
 // --strategy, the sweeps, certified decisions, sensitivities, reconstruction, verification) reads this
 // list and each entry's own members, and names no strategy itself.
 //
-// Adding a strategy: its file here (its parameters, make, convert, regime_decision, solve; see
-// pc_crash.hpp), the engine primitives its closed forms need, and its name in the list below. A SIMD
-// kernel for batch columns, if it has one, is registered in batch/columns.hpp.
+// Adding a strategy: its file here (its spec: parameters, make, convert, regime_decision; and its
+// strategies::solve overload; see pc_crash.hpp), the engine primitives its closed forms need, and its
+// name in the list below. A SIMD kernel for batch columns, if it has one, joins batch/columns.cpp.
 #pragma once
 
 #include <cstddef>

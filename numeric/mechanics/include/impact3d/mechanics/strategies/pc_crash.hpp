@@ -16,7 +16,8 @@
 
 namespace impact3d {
 
-// The strategy's entry: its parameters, how it decides its regime, and its solve (strategies/list.hpp).
+// The strategy's entry (strategies/list.hpp): its parameters and how it decides its regime; its solve
+// is strategies::solve below.
 template <typename Scalar>
 struct PcCrash {
   Scalar mu;
@@ -43,8 +44,6 @@ struct PcCrash {
     return RegimeDecision<Scalar>{regime_decisions[0], "gir - mu", &ImpulseSolution<Scalar>::gir, mu,
                                   Regime::full, Regime::sliding};
   }
-  template <typename Engine>
-  Singular solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const;
 };
 
 }  // namespace impact3d
@@ -53,7 +52,7 @@ namespace impact3d::strategies {
 
 // Fills `out`; returns the singular constraint system, if any (then `out` is incomplete).
 template <typename Engine, typename Scalar>
-Singular pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec, ImpulseSolution<Scalar>& out) {
+Singular solve(const Problem<Scalar>& p, const PcCrash<Scalar>& spec, ImpulseSolution<Scalar>& out) {
   const auto P_fi = Engine::try_full_impact(p, p.restitution);
   if (!P_fi) return {"full impact"};
   const Scalar P_cp = plane_length(P_fi->y(), P_fi->z());
@@ -87,13 +86,3 @@ Singular pc_crash(const Problem<Scalar>& p, const PcCrash<Scalar>& spec, Impulse
 }
 
 }  // namespace impact3d::strategies
-
-namespace impact3d {
-
-template <typename Scalar>
-template <typename Engine>
-Singular PcCrash<Scalar>::solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const {
-  return strategies::pc_crash<Engine>(p, *this, out);
-}
-
-}  // namespace impact3d

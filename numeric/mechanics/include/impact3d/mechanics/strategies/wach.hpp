@@ -13,7 +13,8 @@ namespace impact3d {
 
 enum class WachLimit { cir, gir };  // in the order of the parameter's choices
 
-// The strategy's entry: its parameters, how it decides its regime, and its solve (strategies/list.hpp).
+// The strategy's entry (strategies/list.hpp): its parameters and how it decides its regime; its solve
+// is strategies::solve below.
 // Tangent aligned with the initial sliding velocity (eqs 21-22), ratio capped at the plane's CIR or GIR.
 template <typename Scalar>
 struct Wach {
@@ -44,8 +45,6 @@ struct Wach {
                                   cir ? &ImpulseSolution<Scalar>::cir : &ImpulseSolution<Scalar>::gir, mu,
                                   Regime::capped, Regime::sliding};
   }
-  template <typename Engine>
-  Singular solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const;
 };
 
 }  // namespace impact3d
@@ -54,7 +53,7 @@ namespace impact3d::strategies {
 
 // Fills `out`; returns the singular constraint system, if any (then `out` is incomplete).
 template <typename Engine, typename Scalar>
-Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolution<Scalar>& out) {
+Singular solve(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolution<Scalar>& out) {
   PlaneAxes<Scalar> ax = solution_plane(p, p.V_ri.y(), p.V_ri.z(), plane_length(p.V_ri.y(), p.V_ri.z()),
                                          magnitude(p.V_ri), out,
                                          "phi (eq 21) is undefined: there is no initial sliding velocity; "
@@ -109,13 +108,3 @@ Singular wach(const Problem<Scalar>& p, const Wach<Scalar>& spec, ImpulseSolutio
 }
 
 }  // namespace impact3d::strategies
-
-namespace impact3d {
-
-template <typename Scalar>
-template <typename Engine>
-Singular Wach<Scalar>::solve(const Problem<Scalar>& p, ImpulseSolution<Scalar>& out) const {
-  return strategies::wach<Engine>(p, *this, out);
-}
-
-}  // namespace impact3d
