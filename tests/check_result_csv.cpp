@@ -1,8 +1,8 @@
 // The result CSV written straight from the analysis (case_format/result_csv.hpp's result_csv_rows, which
 // `render` takes for --format csv at a floating precision) against the same rows taken from the result
-// document as it is written (result_csv_from_document, the route of exact results): byte for byte, on
-// every bundled case and on seeded variants of them (speeds, impulse centres, restitution, strategies,
-// unit systems read and written, and names that CSV must quote), at every floating precision; and on a
+// document as it is written (result_csv_from_document.hpp): byte for byte, on every bundled case and on
+// seeded variants of them (speeds, impulse centres, restitution, strategies, unit systems read and
+// written, and names that CSV must quote), at every precision, exact's in the case's units; and on a
 // solution holding a NaN, infinities and negative zeros. The header against the one the program wrote
 // before the direct route existed.
 #include <algorithm>
@@ -25,6 +25,7 @@
 #include "impact3d/case_format/to_scene.hpp"
 #include "impact3d/mechanics/strategy.hpp"
 
+#include "result_csv_from_document.hpp"
 #include "support.hpp"
 
 namespace {
@@ -81,11 +82,11 @@ std::vector<std::string> cells_of(const std::string& text) {
 }
 
 std::string from_document(const CaseSpec& spec, const std::string& precision, RenderOptions o) {
-  JsonPick pick = result_csv_pick();
+  JsonPick pick = impact3d::test::result_csv_pick();
   o.format = Format::jsonl;
   o.pick = &pick;
   const std::string document = render(spec, precision, o);
-  return result_csv_from_document(document, pick, spec, o.line);
+  return impact3d::test::result_csv_from_document(document, pick, spec, o.line);
 }
 
 }  // namespace
@@ -99,16 +100,16 @@ TEST_CASE("the result CSV written from the analysis is the CSV taken from the wr
   // The units the numbers are written in (solve --units): the case's, or each system in turn.
   const std::optional<Units> written[] = {std::nullopt, Units::metric_kmh, Units::US, Units::SI};
   std::size_t compared = 0, rows = 0, quoted_names = 0, with_warnings = 0, empty_cells = 0, kmh = 0;
-  std::size_t floating = 0;
+  std::size_t precisions = 0;
   for (const std::string& precision : precision_names()) {
-    if (precision == "exact") continue;  // written from its document by both routes
-    ++floating;
+    ++precisions;
+    const bool exact = precision == "exact";  // fractions of the case's own units only
     for (std::size_t i = 0; i < cases.size(); ++i) {
       const CaseSpec spec = read_case(cases[i].dump());
       RenderOptions csv;
       csv.format = Format::csv;
       csv.line = static_cast<long>(i) + 7;
-      csv.units = written[i % 4];
+      csv.units = exact ? std::nullopt : written[i % 4];
       std::string direct;
       try {
         direct = render(spec, precision, csv);
@@ -130,12 +131,12 @@ TEST_CASE("the result CSV written from the analysis is the CSV taken from the wr
       }
     }
   }
-  // Every floating precision, each over the bundled cases and 40 variants, most of them approaching.
-  CHECK(floating + 1 == precision_names().size());
-  CHECK(compared >= floating * (bundled + 30));
+  // Every precision, each over the bundled cases and 40 variants, most of them approaching.
+  CHECK(precisions == precision_names().size());
+  CHECK(compared >= precisions * (bundled + 30));
   CHECK(rows >= 3 * compared);
-  CHECK(kmh >= floating * 8);
-  CHECK(quoted_names >= floating * 4 * 5 / 8);  // the names of 5 of the 8 kinds are quoted
+  CHECK(kmh >= (precisions - 1) * 8);
+  CHECK(quoted_names >= precisions * 4 * 5 / 8);  // the names of 5 of the 8 kinds are quoted
   CHECK(with_warnings > 0);
   CHECK(empty_cells > 0);
 }
@@ -154,10 +155,10 @@ TEST_CASE("a NaN, an infinity and a negative zero are the document's null and -0
   s.change[1].pdof_deg = -0.0;
   s.energy_loss = -nan;
   s.rounding_bound = inf;
-  JsonPick pick = result_csv_pick();
+  JsonPick pick = impact3d::test::result_csv_pick();
   const std::string document = result_json(spec, a, "double", 0, false, {}, true, &pick);
   const std::string direct = result_csv_rows(spec, a, "double", 3);
-  CHECK(direct == result_csv_from_document(document, pick, spec, 3));
+  CHECK(direct == impact3d::test::result_csv_from_document(document, pick, spec, 3));
   // The cells by name, from the header: null is an empty cell, -0 is written "-0".
   const std::vector<std::string> header = cells_of(result_csv_header()), row = cells_of(direct);
   REQUIRE(row.size() == header.size());

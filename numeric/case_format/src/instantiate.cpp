@@ -16,22 +16,9 @@ std::string render(const CaseSpec& spec, const RenderOptions& o) {
   const Scene<Scalar> scene = to_scene<Scalar>(spec);
   const Analysis<Scalar> a = analyze(scene, to_strategies<Scalar>(spec), o.engine);
   const std::string precision(precision_name<Scalar>);
-  if (o.warning_codes) {
-    o.warning_codes->clear();
-    for (const auto& sol : a.solutions) {
-      WarningSet codes = 0;
-      for (const auto& w : sol.warnings) codes |= warning_bit(w.code);
-      o.warning_codes->push_back(codes);
-    }
-  }
   // The numbers written in the units asked for: the writers present in their spec's units.
-  CaseSpec in_units;
-  const CaseSpec* shown = &spec;
-  if (o.units && *o.units != spec.units) {
-    in_units = spec;
-    in_units.units = *o.units;
-    shown = &in_units;
-  }
+  CaseSpec storage;
+  const CaseSpec* shown = &shown_in_units(spec, o, storage);
   if (o.format == Format::csv) return result_csv_rows(*shown, a, precision, o.line);
   if (is_json(o.format)) return result_json(*shown, a, precision, 0, false, {}, o.format == Format::jsonl, o.pick);
   const int digits = o.digits > 0 ? o.digits : std::numeric_limits<Scalar>::digits10;

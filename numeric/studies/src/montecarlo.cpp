@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -22,7 +21,6 @@
 #include "impact3d/case_format/case_variants.hpp"
 #include "impact3d/case_format/escape.hpp"
 #include "impact3d/case_format/format_double.hpp"
-#include "impact3d/case_format/json_pick.hpp"
 #include "impact3d/studies/precision.hpp"
 #include "impact3d/case_format/result_outputs.hpp"
 #include "impact3d/case_format/strategy_kinds.hpp"
@@ -44,14 +42,6 @@ constexpr std::uint64_t kChunk = 64;  // samples a thread takes at once
 // The value an unbounded end of a distribution is probed at: inside the case's magnitude limit (1e12),
 // outside any field's bounds.
 constexpr double kFar = 1e11;
-
-// What the pick records of each result document: every output, then the regime.
-JsonPick make_pick() {
-  std::vector<JsonPath> paths;
-  for (const auto& o : monte_carlo_outputs()) paths.push_back(under_each_result(o.path));
-  paths.push_back(under_each_result({PathStep::of_key("regime")}));
-  return JsonPick(paths, true);
-}
 
 // Whether `path` is `container` or lies under it.
 bool under(const std::string& path, const std::string& container) {
@@ -145,7 +135,7 @@ class Worker {
   Worker(const CaseVariants& variants, const uncertainty::Sampler& sampler, const MonteCarloOptions& o,
          std::size_t results, MonteCarloRun& run, std::vector<double>& store, std::mutex& reasons_lock,
          const std::vector<std::string>& direct)
-      : variants_(variants), sampler_(sampler), o_(o), pick_(make_pick()), tally_(results), run_(run), store_(store),
+      : variants_(variants), sampler_(sampler), o_(o), tally_(results), run_(run), store_(store),
         reasons_lock_(reasons_lock), values_(sampler.size()), spec_(variants.base()) {
     for (auto& t : tally_) t.written.assign(monte_carlo_outputs().size(), false);
     if (direct.empty()) return;
@@ -221,21 +211,27 @@ class Worker {
   }
 
  private:
-  // Results first .. first + count of sample i, where `spec`'s strategies are those results.
+  // Results first .. first + count of sample i, where `spec`'s strategies are those results: the
+  // analysis at the run's precision, its numbers taken as the document writes them
+  // (numbers_of_solution) and each rounded once to double, never read back from text;
+  // `tests/check_montecarlo.cpp` holds them to the document's numbers.
   void solve(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
-    if (o_.precision == PrecisionChoice(floating_precision<double>())) solve_direct(i, spec, first, count);
-    else solve_document(i, spec, first, count);
+    const std::size_t index = std::get<FloatingPrecision>(o_.precision).index;
+    for_each_scalar_index([&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
+      if (I == index) solve_at<ScalarAt<I>>(i, spec, first, count);
+    });
   }
 
-  // At double: the document's numbers taken from the analysis it is written from, without the text
-  // (numbers_of_solution); `tests/check_montecarlo.cpp` holds them to the document's, bit for bit.
-  void solve_direct(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
-    const Scene<double> scene = to_scene<double>(spec);
-    const Analysis<double> a = analyze(scene, to_strategies<double>(spec), o_.engine);
-    const UnitFactors<double> f = unit_factors<double>(spec.units);
+  template <typename Scalar>
+  void solve_at(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
+    const Scene<Scalar> scene = to_scene<Scalar>(spec);
+    const Analysis<Scalar> a = analyze(scene, to_strategies<Scalar>(spec), o_.engine);
+    const UnitFactors<Scalar> f = unit_factors<Scalar>(spec.units);
     const std::size_t outputs = monte_carlo_outputs().size(), n = run_.samples;
+    thread_local std::vector<Scalar> numbers;  // kept from sample to sample: no allocation once warm
+    numbers.resize(outputs);
     for (std::size_t k = first; k < first + count; ++k) {
-      const Solution<double>& sol = a.solutions[k - first];
+      const Solution<Scalar>& sol = a.solutions[k - first];
       Tally& t = tally_[k];
       ++t.solved;
       WarningSet codes = 0;
@@ -246,52 +242,12 @@ class Worker {
           std::find(kRegimeNames.begin(), kRegimeNames.end(), regime_name(sol.impulse.regime)) - kRegimeNames.begin());
       ++t.regimes[r];
       if (o_.keep_samples) run_.regime_of[k][i] = static_cast<std::int8_t>(r);
-      numbers_of_solution(sol, f, values_out_.data(), written_.data());
+      numbers_of_solution(sol, f, numbers.data(), written_.data());
       for (std::size_t c = 0; c < outputs; ++c)
         if (written_[c]) {
           t.written[c] = true;
-          store_[(k * outputs + c) * n + i] = values_out_[c];
+          store_[(k * outputs + c) * n + i] = to_double(numbers[c]);
         }
-    }
-  }
-
-  // At other precisions: the outputs picked from the document as it is written, and read back.
-  void solve_document(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
-    pick_.clear();
-    RenderOptions ro;
-    ro.format = Format::jsonl;
-    ro.engine = o_.engine;
-    ro.pick = &pick_;
-    ro.warning_codes = &codes_;
-    const std::string doc = render(spec, o_.precision, ro);
-    const std::size_t outputs = monte_carlo_outputs().size(), n = run_.samples;
-    for (std::size_t k = first; k < first + count; ++k) {
-      Tally& t = tally_[k];
-      ++t.solved;
-      for (std::size_t w = 0; w < kWarningNames.size(); ++w)
-        if (has_warning(codes_[k - first], static_cast<WarningCode>(w))) ++t.warnings[w];
-    }
-    for (const auto& s : pick_.spans()) {
-      const std::size_t k = first + s.group;
-      if (s.group >= count) continue;
-      const std::string_view text(doc.data() + s.begin, s.end - s.begin);
-      if (s.column == outputs) {  // the regime, a string
-        const std::string_view name = pick_.string(s);
-        const auto it = std::find(kRegimeNames.begin(), kRegimeNames.end(), name);
-        const std::size_t r = static_cast<std::size_t>(it - kRegimeNames.begin());
-        if (r < kRegimeNames.size()) {
-          ++tally_[k].regimes[r];
-          if (o_.keep_samples) run_.regime_of[k][i] = static_cast<std::int8_t>(r);
-        }
-        continue;
-      }
-      double v = kNaN;  // null: a quantity the document leaves undefined for this sample
-      if (text != "null") {
-        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-        if (ec != std::errc() || end != text.data() + text.size()) throw std::runtime_error("an output does not read back: " + std::string(text));
-      }
-      tally_[k].written[s.column] = true;
-      store_[(k * outputs + s.column) * n + i] = v;
     }
   }
 
@@ -314,16 +270,13 @@ class Worker {
   CaseVariants variants_;  // this thread's copy
   const uncertainty::Sampler& sampler_;
   const MonteCarloOptions& o_;
-  JsonPick pick_;
   std::vector<Tally> tally_;
   MonteCarloRun& run_;
   std::vector<double>& store_;
   std::mutex& reasons_lock_;
   std::vector<double> values_;
-  std::vector<WarningSet> codes_;
   CaseSpec spec_;                // the read case, for the direct route
   std::vector<Number*> slots_;  // the inputs' numbers in spec_
-  std::vector<double> values_out_ = std::vector<double>(monte_carlo_outputs().size());
   std::vector<char> written_ = std::vector<char>(monte_carlo_outputs().size());
 };
 
@@ -357,6 +310,7 @@ std::uint64_t run_bytes_per_sample(std::size_t results, std::size_t inputs, bool
 
 MonteCarloRun montecarlo(const std::string& case_text, const UncertaintySpec& u, const MonteCarloOptions& o) {
   if (std::holds_alternative<ExactPrecision>(o.precision)) throw CaseError("--precision", "Monte Carlo runs at a floating-point precision, not exact");
+  if (std::holds_alternative<CertifiedPrecision>(o.precision)) throw CaseError("--precision", "Monte Carlo runs at a floating-point precision, not certified");
   std::vector<JsonPath> paths;
   std::vector<std::string> where;
   for (std::size_t i = 0; i < u.inputs.size(); ++i) {

@@ -5,7 +5,6 @@
 #include "render_exact.hpp"
 
 #include "impact3d/studies/precision.hpp"
-#include "impact3d/case_format/result_csv.hpp"
 #include "impact3d/scalar/scalars.hpp"
 
 namespace impact3d::studies {
@@ -61,17 +60,6 @@ std::string render(const CaseSpec& spec, const PrecisionChoice& precision, const
 #if IMPACT3D_MULTIPRECISION
   if (o.format == Format::csv && std::holds_alternative<CertifiedPrecision>(precision))
     throw CaseError("--format", "CSV results are written at a floating precision or exact; certified results: impact3d solve --precision certified");
-  if (o.format == Format::csv && exact) {
-    // render_exact writes the document, fractions beside the 100-digit values: the cells are taken from
-    // it as it is written.
-    thread_local JsonPick pick = result_csv_pick();  // kept from case to case: no allocation once warm
-    pick.clear();
-    RenderOptions as_json = o;
-    as_json.format = Format::jsonl;
-    as_json.pick = &pick;
-    const std::string document = render(spec, precision, as_json);
-    return result_csv_from_document(document, pick, spec, o.line);
-  }
   if (exact) return render_exact(spec, o);
   if (const auto* c = std::get_if<CertifiedPrecision>(&precision)) return render_certified(spec, c->bits, o);
 #endif

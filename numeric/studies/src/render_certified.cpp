@@ -191,13 +191,8 @@ std::string render_certified(const CaseSpec& spec, long bits, const RenderOption
   if (o.format == Format::html)
     throw CaseError("--precision", "the HTML report is written at a floating precision; certified results: impact3d solve "
                                    "--precision certified");
-  CaseSpec in_units;
-  const CaseSpec* shown = &spec;
-  if (o.units && *o.units != spec.units) {
-    in_units = spec;
-    in_units.units = *o.units;
-    shown = &in_units;
-  }
+  CaseSpec storage;
+  const CaseSpec* shown = &shown_in_units(spec, o, storage);
   const bool given = bits > 0;
   // The default mode doubles the bits while a decision is undecided or a result's ball is wide. When a
   // decision stays undecided to the last doubling, the extra bits bought nothing: the run reported is the

@@ -9,6 +9,7 @@
 #include "impact3d/case_format/read_case.hpp"
 #include "impact3d/studies/precision.hpp"
 #include "impact3d/case_format/report_text.hpp"
+#include "impact3d/case_format/result_csv.hpp"
 #include "impact3d/mechanics/exact_analysis.hpp"
 
 namespace impact3d::studies {
@@ -144,6 +145,7 @@ std::string render_exact(const CaseSpec& spec, const RenderOptions& o) {
   }
   using F = mp::float100;
   const Analysis<F> a = analyze(to_scene<F>(spec), to_strategies<F>(spec), o.engine);
+  if (o.format == Format::csv) return result_csv_rows(spec, a, "exact", o.line);
   if (is_json(o.format))
     return result_json(
         spec, a, "exact", 0, false, [&](JsonWriter& w) { write_exact(w, spec, not_rational, x); }, o.format == Format::jsonl, o.pick);

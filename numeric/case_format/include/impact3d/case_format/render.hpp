@@ -37,12 +37,20 @@ struct RenderOptions {
   int digits = 0;               // text report; 0 = the precision's digits10
   Engine engine = Engine::generated;
   JsonPick* pick = nullptr;  // json, jsonl: where the values it names are written (json_pick.hpp)
-  std::vector<WarningSet>* warning_codes = nullptr;  // when given: each result's warnings as codes
   std::optional<Units> units;  // the unit system written; empty: the case's
   const std::vector<ReportFigure>* figures = nullptr;  // html: the figures placed on the page
   std::string figures_note;                            // html: said above them (e.g. why there are none)
   long line = 0;  // csv: the input line each row starts with (result_csv.hpp)
 };
+
+// The case as the writers present it, whose numbers they write in its spec's units: `spec` itself, or
+// its copy in `storage` in the units o.units asks for.
+inline const CaseSpec& shown_in_units(const CaseSpec& spec, const RenderOptions& o, CaseSpec& storage) {
+  if (!o.units || *o.units == spec.units) return spec;
+  storage = spec;
+  storage.units = *o.units;
+  return storage;
+}
 
 // Throws CaseError for inputs that fail the arithmetic checks, SolveError for no solution.
 template <typename Scalar>

@@ -1,9 +1,8 @@
 // The result as CSV (docs/batch.md, "Results as CSV"): a fixed set of columns, one row per strategy of each
-// case, every cell the text the result document (result_json.hpp) has at the column's path. A floating
-// precision writes the rows straight from the analysis (result_csv_rows); exact results, whose document
-// render_exact writes, take their cells from the document as it is written (result_csv_pick,
-// result_csv_from_document). The columns are listed once, the document's in result_csv_document_cells
-// and each result's in result_csv_cells, for the header, the paths picked and the cells.
+// case, every cell the text the result document (result_json.hpp) has at the column's path, written
+// straight from the analysis (result_csv_rows; tests/check_result_csv.cpp holds it to the document). The
+// columns are listed once, the document's in result_csv_document_cells and each result's in
+// result_csv_cells, for the header and the cells.
 #pragma once
 
 #include <algorithm>
@@ -15,7 +14,6 @@
 
 #include "impact3d/case_format/case_spec.hpp"
 #include "impact3d/case_format/csv_text.hpp"
-#include "impact3d/case_format/json_pick.hpp"
 #include "impact3d/case_format/json_text.hpp"
 #include "impact3d/case_format/present.hpp"
 #include "impact3d/case_format/scalar_text.hpp"
@@ -140,8 +138,8 @@ struct CsvCells {
 
 }  // namespace detail
 
-// The rows of one case straight from its analysis, `line` first: what result_csv_from_document gives
-// for the document result_json(c, a, precision, 0, false, {}, true) writes, byte for byte.
+// The rows of one case straight from its analysis, `line` first: the cells the document
+// result_json(c, a, precision, 0, false, {}, true) writes, byte for byte.
 template <typename Scalar>
 std::string result_csv_rows(const CaseSpec& c, const Analysis<Scalar>& a, const std::string& precision, long line) {
   const Present<Scalar> p(c.units, std::numeric_limits<Scalar>::max_digits10);
@@ -177,9 +175,5 @@ std::string result_csv_rows(const CaseSpec& c, const Analysis<Scalar>& a, const 
   }
   return std::move(out).take();
 }
-
-// The same rows from the text of the result document of `c` written with result_csv_pick's pick.
-JsonPick result_csv_pick();
-std::string result_csv_from_document(std::string_view document, const JsonPick& pick, const CaseSpec& c, long line);
 
 }  // namespace impact3d::case_format
