@@ -216,10 +216,8 @@ class Worker {
   // (numbers_of_solution) and each rounded once to double, never read back from text;
   // `tests/check_montecarlo.cpp` holds them to the document's numbers.
   void solve(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
-    const std::size_t index = std::get<FloatingPrecision>(o_.precision).index;
-    for_each_scalar_index([&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
-      if (I == index) solve_at<ScalarAt<I>>(i, spec, first, count);
-    });
+    with_floating_scalar(std::get<FloatingPrecision>(o_.precision),
+                         [&]<typename Scalar>() { solve_at<Scalar>(i, spec, first, count); });
   }
 
   template <typename Scalar>

@@ -63,11 +63,8 @@ std::string render(const CaseSpec& spec, const PrecisionChoice& precision, const
   if (exact) return render_exact(spec, o);
   if (const auto* c = std::get_if<CertifiedPrecision>(&precision)) return render_certified(spec, c->bits, o);
 #endif
-  const std::size_t index = std::get<FloatingPrecision>(precision).index;
   std::string out;
-  for_each_scalar_index([&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
-    if (I == index) out = render<ScalarAt<I>>(spec, o);
-  });
+  with_floating_scalar(std::get<FloatingPrecision>(precision), [&]<typename Scalar>() { out = render<Scalar>(spec, o); });
   return out;
 }
 

@@ -44,6 +44,14 @@ constexpr FloatingPrecision floating_precision() {
   return {index};
 }
 
+// f.template operator()<Scalar>() for the floating scalar `p` names.
+template <typename F>
+void with_floating_scalar(const FloatingPrecision& p, F&& f) {
+  for_each_scalar_index([&]<std::size_t I>(std::integral_constant<std::size_t, I>) {
+    if (I == p.index) f.template operator()<ScalarAt<I>>();
+  });
+}
+
 // The names parse_precision takes without BITS: every scalar of scalars.hpp and, with the
 // multiprecision scalars, "exact" ("certified" and "certified:BITS" besides).
 std::vector<std::string> precision_names();
