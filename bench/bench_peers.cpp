@@ -3,8 +3,8 @@
 // (impulse only, and with the post-impact velocities; both engines), analyze, and the naive scalar peer
 // (bench/naive/pc_crash.hpp), on the same seeded random approaching collisions; Wach and Brach on the
 // lanes and on the scalar lean path, on the same collisions.
-// tests/check_naive_peers.cpp holds the peer to impact3d, tests/check_batch.cpp the batches to the lean
-// path, tests/check_lean.cpp the lean path to analyze.
+// tests/mechanics/check_naive_peers.cpp holds the peer to impact3d, tests/mechanics/check_batch.cpp the batches to the lean
+// path, tests/mechanics/check_lean.cpp the lean path to analyze.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // The collisions the peers (bench/naive/) are timed on in bench_peers.cpp and held to impact3d on in
-// tests/check_naive_peers.cpp: seeded random raw parameters, and the scene impact3d builds from them.
+// tests/mechanics/check_naive_peers.cpp: seeded random raw parameters, and the scene impact3d builds from them.
 #pragma once
 
 #include <cstdint>

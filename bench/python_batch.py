@@ -4,7 +4,7 @@ run (BENCHMARKS.md). Usage: PYTHONPATH=BUILD/python python3 bench/python_batch.p
 
 Prints, for each, the best of 3 wall-clock times and ns per collision; solve_batch on every core (jobs=0)
 and on one (jobs=1); and the largest difference between the two results relative to the impulse (the
-peer is held to 1e-12 by tests/check_naive_peers.cpp)."""
+peer is held to 1e-12 by tests/mechanics/check_naive_peers.cpp)."""
 import os
 import sys
 import time

@@ -1,6 +1,6 @@
 // A naive scalar implementation of the pc-crash impulse from raw parameters, written for the benchmarks as
 // a user would write it from the paper: std::sin/cos, plain arrays, a 3x3 solve by Cramer's rule. It is
-// a peer to measure against, not part of impact3d; tests/check_naive_peers.cpp holds it to impact3d.
+// a peer to measure against, not part of impact3d; tests/mechanics/check_naive_peers.cpp holds it to impact3d.
 #pragma once
 
 #include <cmath>

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The pc-crash impulse from raw parameters, vectorized over many collisions with NumPy: the peer of
 bench/naive/pc_crash.hpp written as an analyst would write it in Python. Not part of impact3d;
-tests/check_naive_peers.cpp holds it to impact3d.
+tests/mechanics/check_naive_peers.cpp holds it to impact3d.
 
 As a program: reads a CSV of collisions (the columns of COLUMNS, one row each) on standard input and
 writes P_n, P_t, P_z and the regime (1 Full Impact, 0 Sliding Impact) per row on standard output.

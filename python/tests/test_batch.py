@@ -3,7 +3,7 @@ peer draws them (bench/naive/pc_crash.py: full inertia tensors, tilted bodies an
 
 Tolerance: the lanes' sines, cosines and fused multiply-adds round differently from the scalar path, but
 each is within its rounding bound of the exact impulse of the row (the result's rounding_bound, 32 eps A
-with A the row's amplification; tests/check_batch.cpp), so the two are within twice that of each other."""
+with A the row's amplification; tests/mechanics/check_batch.cpp), so the two are within twice that of each other."""
 import json
 import re
 import sys

@@ -1,5 +1,5 @@
 """Bad input raises impact3d.CaseError (a ValueError) whose message is the command line's line: for every
-file of the bad-input corpus (tests/bad_input/, whose expected.tsv holds each line the CLI prints after
+file of the bad-input corpus (tests/program/bad_input/, whose expected.tsv holds each line the CLI prints after
 "impact3d: error: FILE: ", reviewed by hand and checked against the CLI by exam_bad_input), at double and
 at 100 digits; bad options raise ValueError."""
 import pytest
@@ -7,7 +7,7 @@ import pytest
 import impact3d
 from conftest import SOURCE
 
-BAD = SOURCE / "tests" / "bad_input"
+BAD = SOURCE / "tests" / "program" / "bad_input"
 
 
 def expected_lines():

@@ -214,7 +214,7 @@ class Worker {
   // Results first .. first + count of sample i, where `spec`'s strategies are those results: the
   // analysis at the run's precision, its numbers taken as the document writes them
   // (numbers_of_solution) and each rounded once to double, never read back from text;
-  // `tests/check_montecarlo.cpp` holds them to the document's numbers.
+  // `tests/studies/check_montecarlo.cpp` holds them to the document's numbers.
   void solve(std::uint64_t i, const CaseSpec& spec, std::size_t first, std::size_t count) {
     with_floating_scalar(std::get<FloatingPrecision>(o_.precision),
                          [&]<typename Scalar>() { solve_at<Scalar>(i, spec, first, count); });

@@ -1,6 +1,6 @@
 // The result as CSV (docs/batch.md, "Results as CSV"): a fixed set of columns, one row per strategy of each
 // case, every cell the text the result document (result_json.hpp) has at the column's path, written
-// straight from the analysis (result_csv_rows; tests/check_result_csv.cpp holds it to the document). The
+// straight from the analysis (result_csv_rows; tests/studies/check_result_csv.cpp holds it to the document). The
 // columns are listed once, the document's in result_csv_document_cells and each result's in
 // result_csv_cells, for the header and the cells.
 #pragma once

@@ -97,7 +97,7 @@ Mat3<Scalar> rotation_zyx_deg(const Scalar& yaw, const Scalar& pitch, const Scal
 
 // The same rotation in closed form from the sines and cosines, a third of the operations, for the lean
 // path and batches (raw_collision.hpp). Its entries equal rotation_zyx_deg's bit for bit but for the sign of some zeros
-// (the product adds zero terms that this form leaves out; tests/check_rotation.cpp). Entry by entry, not
+// (the product adds zero terms that this form leaves out; tests/mechanics/check_rotation.cpp). Entry by entry, not
 // by Eigen's comma initializer, which kept GCC from inlining it into compute_scene: the call and the
 // copies cost a tenth of a lean pc-crash solve in double (BENCHMARKS.md).
 template <typename Scalar>

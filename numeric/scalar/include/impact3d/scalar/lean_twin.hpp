@@ -1,6 +1,6 @@
 // The type the lean path (lean.hpp, raw_collision.hpp) computes a scalar's results in: the scalar itself,
 // or a twin whose every operation gives the same value bit for bit, only faster. multiprecision.hpp pairs
-// MPFR's 100 digits with FixedFloat<334> (fixed_float.hpp); tests/check_fixed_float.cpp holds each
+// MPFR's 100 digits with FixedFloat<334> (fixed_float.hpp); tests/mechanics/check_fixed_float.cpp holds each
 // operation, and the lean route as a whole, to MPFR's.
 #pragma once
 

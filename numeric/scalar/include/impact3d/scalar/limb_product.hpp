@@ -9,7 +9,7 @@
 //
 // x86-64 only, and only where the processor has BMI2 (mulx) and ADX (adcx, adox), read once from cpuid;
 // elsewhere, under tools that hide them (valgrind does), and with IMPACT3D_GMP_PRODUCT set, FixedFloat
-// keeps GMP's mpn_mul_n. The two give the same integer, which tests/check_fixed_float.cpp holds limb for
+// keeps GMP's mpn_mul_n. The two give the same integer, which tests/mechanics/check_fixed_float.cpp holds limb for
 // limb.
 #pragma once
 

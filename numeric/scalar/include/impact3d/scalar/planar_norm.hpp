@@ -1,7 +1,7 @@
 // |(a, b)|, the length of a vector in a plane, for the few each solve takes. At double, while neither
 // square can overflow and the larger cannot underflow (the larger magnitude in [2^-450, 2^500]), it is
 // the root of the sum of squares: four roundings, each of u = eps/2, put it within eps (1 + eps/4) of
-// the exact length (tests/check_planar_norm.cpp; a smaller square that underflows is under 2^-120 of
+// the exact length (tests/mechanics/check_planar_norm.cpp; a smaller square that underflows is under 2^-120 of
 // the sum). glibc's hypot is closer (about half that) at several times the cost, a tenth of a lean
 // pc-crash solve (BENCHMARKS.md); the rounding bounds count one eps for either. A build that fuses
 // the sum into a multiply-add rounds once less. Outside that range, and at every other scalar, it is

@@ -1,7 +1,7 @@
 // The numbers of one result as its document writes them (result_json.hpp, write_solution), in the
 // order of monte_carlo_outputs(): each value divided by its unit factor as the writer divides it, NaN
 // where the writer writes null, and `written` 0 where the writer leaves the key out. At double these
-// are the document's numbers bit for bit (tests/check_montecarlo.cpp); at a dual type they carry their
+// are the document's numbers bit for bit (tests/studies/check_montecarlo.cpp); at a dual type they carry their
 // derivatives (sensitivity.hpp).
 #pragma once
 

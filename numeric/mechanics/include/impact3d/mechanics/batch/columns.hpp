@@ -13,7 +13,7 @@
 // rounding bound, widened for a ratio by what its denominator amplifies; or the row carries a warning
 // other than the two the lanes give themselves, a tensile normal impulse and Wach's negative ratio. The
 // impulses of the rows solved on lanes differ from solve_lean's only by the rounding of the vectorized
-// sine and cosine and of fused multiply-adds (tests/check_batch.cpp states and checks the bound).
+// sine and cosine and of fused multiply-adds (tests/mechanics/check_batch.cpp states and checks the bound).
 #pragma once
 
 #include <array>

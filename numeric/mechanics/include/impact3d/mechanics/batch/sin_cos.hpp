@@ -1,6 +1,6 @@
 // sin_cos_deg (rotation.hpp) of many angles on SIMD lanes: what the batches and the raw parameters of
 // one collision (raw_collision.hpp) take their rotations from. Within 4 ulps of the scalar path
-// (tests/check_batch.cpp); multiples of 90 degrees exact.
+// (tests/mechanics/check_batch.cpp); multiples of 90 degrees exact.
 #pragma once
 
 #include <cstddef>

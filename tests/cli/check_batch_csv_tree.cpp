@@ -11,7 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include "impact3d/cli/batch_csv.hpp"
-#include "fuzz/json_tree_equal.hpp"
+#include "json_tree_equal.hpp"
 #include "impact3d/case_format/case_spec.hpp"
 #include "impact3d/case_format/json_tree.hpp"
 

@@ -13,7 +13,7 @@
 #include "impact3d/case_format/present.hpp"
 #include "impact3d/case_format/read_case.hpp"
 #include "impact3d/studies/precision.hpp"
-#include "support.hpp"
+#include "case_files.hpp"
 
 using namespace impact3d;
 using namespace impact3d::test;

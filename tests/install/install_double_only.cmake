@@ -1,6 +1,6 @@
 # A double-only build of the library (IMPACT3D_MULTIPRECISION=OFF: no program, tests or symbolic part),
 # installed into a scratch prefix; its exported targets must name no MPFR, GMP or quadmath, and
-# tests/consumer must build against it and print the same P_n as the full build's program.
+# tests/install/consumer must build against it and print the same P_n as the full build's program.
 # Variables: SOURCE_DIR (the project), CONSUMER_DIR, WORK_DIR, EXAMPLE, CLI, GENERATOR, CXX.
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX}

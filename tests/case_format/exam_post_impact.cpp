@@ -6,7 +6,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "support.hpp"
+#include "case_files.hpp"
 
 using namespace impact3d;
 using namespace impact3d::test;

@@ -31,7 +31,7 @@ namespace {
 
 std::map<std::string, std::string> expected_lines() {
   std::map<std::string, std::string> m;
-  std::ifstream in(fs::path(BAD_INPUT_DIR) / "expected.tsv");
+  std::ifstream in(fs::path(IMPACT3D_BAD_INPUT_DIR) / "expected.tsv");
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;
     const auto tab = line.find('\t');
@@ -45,7 +45,7 @@ std::map<std::string, std::string> expected_lines() {
 TEST_CASE("every malformed case is rejected with one line naming the field", "[bad-input]") {
   const auto expected = expected_lines();
   int files = 0;
-  for (const auto& entry : fs::directory_iterator(BAD_INPUT_DIR)) {
+  for (const auto& entry : fs::directory_iterator(IMPACT3D_BAD_INPUT_DIR)) {
     if (entry.path().extension() != ".json") continue;
     ++files;
     const std::string name = entry.path().filename().string();
@@ -130,7 +130,7 @@ TEST_CASE("command-line usage errors: exit 2 and one line", "[bad-input]") {
 TEST_CASE("bad input to every subcommand: exit 1, one error line, nothing on stdout", "[bad-input]") {
   // A malformed case (its line from bad_input/expected.tsv) and a file that does not exist, given to each
   // subcommand that reads it; compare reads result files, so it gets a case file where a result belongs.
-  const std::string bad = std::string(BAD_INPUT_DIR) + "/mass_negative.json";
+  const std::string bad = std::string(IMPACT3D_BAD_INPUT_DIR) + "/mass_negative.json";
   const std::string fig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
   const std::string missing = "/nonexistent/case.json";
   const std::string bad_line = "impact3d: error: " + bad + ": $.vehicles[1].mass: must be > 0 (got -2200)\n";

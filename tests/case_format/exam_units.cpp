@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "support.hpp"
+#include "case_files.hpp"
 
 using namespace impact3d;
 using namespace impact3d::test;

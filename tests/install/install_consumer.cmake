@@ -1,4 +1,4 @@
-# Install the build tree into a scratch prefix, build tests/consumer against it with find_package, run it,
+# Install the build tree into a scratch prefix, build tests/install/consumer against it with find_package, run it,
 # and compare its output with the installed CLI's P_n for the same case.
 file(REMOVE_RECURSE ${WORK_DIR})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix RESULT_VARIABLE rc OUTPUT_QUIET)

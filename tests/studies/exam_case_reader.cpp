@@ -6,6 +6,9 @@
 #include <catch2/catch.hpp>
 
 #include "impact3d/case_format/json_literals.hpp"
+#include "impact3d/case_format/read_case.hpp"
+#include "impact3d/case_format/strategy_kinds.hpp"
+#include "impact3d/case_format/to_scene.hpp"
 #include "impact3d/studies/precision.hpp"
 #include "support.hpp"
 

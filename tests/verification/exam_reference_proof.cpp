@@ -65,7 +65,7 @@ TEST_CASE("the committed Figure 8 reference is every digit proven, as the proof 
   const auto proof = f.prove();
   INFO(proof.failure);
   REQUIRE(proof.failure.empty());
-  std::ifstream in(std::string(IMPACT3D_EXAMPLES_DIR) + "/../verification/reference/fig8_side_impact.json", std::ios::binary);
+  std::ifstream in(std::string(IMPACT3D_REFERENCE_DIR) + "/fig8_side_impact.json", std::ios::binary);
   std::stringstream committed;
   committed << in.rdbuf();
   CHECK(proof.document == committed.str());

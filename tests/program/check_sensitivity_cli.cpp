@@ -23,7 +23,7 @@ constexpr double kEps = 0x1p-52;
 
 std::map<std::string, std::string> expected_lines() {
   std::map<std::string, std::string> m;
-  std::ifstream in(fs::path(BAD_INPUT_DIR) / "expected.tsv");
+  std::ifstream in(fs::path(IMPACT3D_BAD_INPUT_DIR) / "expected.tsv");
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;
     const auto tab = line.find('\t');
@@ -79,7 +79,7 @@ TEST_CASE("every example: the contract's keys, and the regime margin from solve'
 TEST_CASE("bad cases get solve's one line, exit 1, nothing on stdout") {
   int checked = 0;
   for (const auto& [file, line] : expected_lines()) {
-    const std::string path = (fs::path(BAD_INPUT_DIR) / file).string();
+    const std::string path = (fs::path(IMPACT3D_BAD_INPUT_DIR) / file).string();
     const Run solve = run_program(IMPACT3D_CLI, {"solve", path});
     const Run sens = run_program(IMPACT3D_CLI, {"sensitivity", path});
     INFO(file);

@@ -3,7 +3,7 @@
 // independent value; `impact3d verify` takes every precision to 100 digits).
 #include <catch2/catch.hpp>
 
-#include "support.hpp"
+#include "case_files.hpp"
 
 using namespace impact3d;
 using namespace impact3d::test;

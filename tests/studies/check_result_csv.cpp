@@ -26,7 +26,7 @@
 #include "impact3d/mechanics/strategy.hpp"
 
 #include "result_csv_from_document.hpp"
-#include "support.hpp"
+#include "case_files.hpp"
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include "impact3d/mechanics/certified.hpp"
 #include "impact3d/mechanics/exact_analysis.hpp"
 #include "impact3d/scalar/multiprecision.hpp"
-#include "support.hpp"
+#include "case_files.hpp"
 
 using namespace impact3d;
 using namespace impact3d::test;

@@ -14,7 +14,7 @@
 
 #include <catch2/catch.hpp>
 
-#include "fuzz/json_tree_equal.hpp"
+#include "json_tree_equal.hpp"
 #include "impact3d/case_format/case_spec.hpp"
 #include "impact3d/case_format/json_tree.hpp"
 #include "impact3d/case_format/read_case.hpp"

@@ -1,5 +1,6 @@
 // Shared by the tests: seeded random collisions with products of inertia, tilted contact frames and
-// pitched/rolled vehicles; the bundled examples; and tolerances in units of epsilon.
+// pitched/rolled vehicles; the bundled examples' paths; and tolerances in units of epsilon. Mechanics
+// only: a test that reads a case file includes case_files.hpp and links the case format.
 #pragma once
 
 #include <fstream>
@@ -8,7 +9,6 @@
 #include <sstream>
 #include <string>
 
-#include "impact3d/case_format/read_case.hpp"
 #include "impact3d/mechanics/analysis.hpp"
 
 namespace impact3d::test {
@@ -25,8 +25,6 @@ inline std::string read_text(const std::string& path) {
 }
 
 inline std::string example(const std::string& name) { return std::string(IMPACT3D_EXAMPLES_DIR) + "/" + name; }
-
-inline case_format::CaseSpec load_spec(const std::string& path) { return case_format::read_case(read_text(path)); }
 
 struct Range {
   double lo, hi;
