@@ -27,5 +27,7 @@ std::string render(const CaseSpec& spec, const RenderOptions& o) {
 }
 
 template std::string render<ScalarAt<IMPACT3D_SCALAR_INDEX>>(const CaseSpec&, const RenderOptions&);
+template Scene<ScalarAt<IMPACT3D_SCALAR_INDEX>> to_scene<ScalarAt<IMPACT3D_SCALAR_INDEX>>(const CaseSpec&);
+template std::vector<Strategy<ScalarAt<IMPACT3D_SCALAR_INDEX>>> to_strategies<ScalarAt<IMPACT3D_SCALAR_INDEX>>(const CaseSpec&);
 
 }  // namespace impact3d::case_format

@@ -16,6 +16,12 @@ void free_thread_caches() {
 #endif
 }
 
+#if IMPACT3D_MULTIPRECISION
+namespace mp {
+const bool limits_filled = fill_limits<float50>() && fill_limits<float100>();
+}  // namespace mp
+#endif
+
 void fill_shared_before_threads() {
 #if IMPACT3D_MULTIPRECISION
   mp::fill_limits<mp::float50>();

@@ -18,6 +18,7 @@
 #include "impact3d/generated/full_impact.hpp"
 #include "impact3d/generated/solution_plane.hpp"
 #include "impact3d/mechanics/batch/columns.hpp"
+#include "impact3d/mechanics/rotation.hpp"
 #include "lanes_entry.hpp"
 
 // Eigen holds batches as the scalar of fixed-size matrices that the kernels only index.
@@ -39,17 +40,12 @@ using M3 = Eigen::Matrix<B, 3, 3>;
 template <typename B>
 using V3 = Eigen::Matrix<B, 3, 1>;
 
-template <typename B>
-struct SinCosB {
-  B s, c;
-};
-
 // sin_cos_deg (rotation.hpp) on lanes: quarter turns taken out exactly, the rest by xsimd's sincos.
 // Multiplications replace the scalar path's divisions (a division costs a lane group some 16 cycles):
 // the quarter turn may then differ from the scalar path's where deg / 90 is within an ulp of a half
 // turn, where either gives a rest of 45 degrees, and the radians by an ulp; multiples of 90 stay exact.
 template <typename B>
-SinCosB<B> sin_cos_deg(const B& deg) {
+SinCos<B> sin_cos_deg(const B& deg) {
   const B quarter(90.0), zero(0.0), one(1.0);
   const B turns = xsimd::floor(deg * B(1.0 / 90.0) + B(0.5));
   const B rest = deg - turns * quarter;
@@ -66,16 +62,10 @@ SinCosB<B> sin_cos_deg(const B& deg) {
           xsimd::select(q1, -s, xsimd::select(q2, -c, xsimd::select(q3, s, c)))};
 }
 
-// rotation_zyx_deg_closed on lanes.
+// rotation_zyx_deg_closed on lanes: the lanes' sines and cosines, rotation.hpp's closed form.
 template <typename B>
 M3<B> rotation(const B& yaw, const B& pitch, const B& roll) {
-  const SinCosB<B> z = sin_cos_deg(yaw), y = sin_cos_deg(pitch), x = sin_cos_deg(roll);
-  const B zc_ys = z.c * y.s, zs_ys = z.s * y.s;
-  M3<B> r;
-  r(0, 0) = z.c * y.c, r(0, 1) = -z.s * x.c + zc_ys * x.s, r(0, 2) = z.s * x.s + zc_ys * x.c;
-  r(1, 0) = z.s * y.c, r(1, 1) = z.c * x.c + zs_ys * x.s, r(1, 2) = -z.c * x.s + zs_ys * x.c;
-  r(2, 0) = -y.s, r(2, 1) = y.c * x.s, r(2, 2) = y.c * x.c;
-  return r;
+  return rotation_zyx(sin_cos_deg(yaw), sin_cos_deg(pitch), sin_cos_deg(roll));
 }
 
 // A^T B, summed in the order Eigen's product sums.

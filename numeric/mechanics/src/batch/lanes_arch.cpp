@@ -37,7 +37,7 @@ std::size_t IMPACT3D_LANES_NAME(brach, IMPACT3D_BATCH_ARCH_NAME)(const Collision
 std::size_t IMPACT3D_SIN_COS_NAME(IMPACT3D_BATCH_ARCH_NAME)(const double* deg, double* s, double* c, std::size_t n) {
   std::size_t i = 0;
   for (; i + B::size <= n; i += B::size) {
-    const SinCosB<B> r = sin_cos_deg(B::load_unaligned(deg + i));
+    const SinCos<B> r = sin_cos_deg(B::load_unaligned(deg + i));
     r.s.store_unaligned(s + i);
     r.c.store_unaligned(c + i);
   }

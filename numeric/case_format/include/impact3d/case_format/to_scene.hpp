@@ -152,4 +152,12 @@ std::vector<Strategy<Scalar>> to_strategies(const CaseSpec& c) {
   return out;
 }
 
+// Compiled once per scalar of the list, in case_format/src/instantiate.cpp, not in every object that
+// reads a case at one of them.
+#define IMPACT3D_EXTERN_TO_SCENE_(type, name, u)                 \
+  extern template Scene<type> to_scene<type>(const CaseSpec&); \
+  extern template std::vector<Strategy<type>> to_strategies<type>(const CaseSpec&);
+IMPACT3D_SCALARS(IMPACT3D_EXTERN_TO_SCENE_)
+#undef IMPACT3D_EXTERN_TO_SCENE_
+
 }  // namespace impact3d::case_format

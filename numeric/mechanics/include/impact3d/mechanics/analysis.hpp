@@ -56,10 +56,11 @@ Analysis<Scalar> analyze_with(const Scene<Scalar>& s, const std::vector<Strategy
     }
     flag_precision(a.solutions.back(), p.amplification, p.kappa);
   }
-  if (!case_finite(a))
-    for (auto& sol : a.solutions)
-      sol.warnings.push_back({WarningCode::not_finite, "a quantity of the case (m', K, its condition or the impulse-space "
-                                                       "geometry) is not finite at this precision"});
+  if (!case_finite(a)) {
+    const std::string text = "a quantity of the case (m', K, its condition or the impulse-space geometry) is not finite "
+                             "at this precision";
+    for (auto& sol : a.solutions) sol.warnings.push_back({WarningCode::not_finite, text});
+  }
   return a;
 }
 

@@ -38,7 +38,12 @@ bool fill_limits() {
   (void)L::epsilon(), (void)L::round_error(), (void)(L::min)(), (void)(L::max)(), (void)L::infinity(), (void)L::quiet_NaN();
   return true;
 }
-inline const bool limits_filled = fill_limits<float50>() && fill_limits<float100>();
+// The fill runs once, in the start-up of the one object that defines limits_filled
+// (scalar/src/thread_caches.cpp); every object that includes this header keeps a reference to it, so
+// that every program using these numbers links that object and its fill, while no object but that one
+// instantiates the fill (a fifth of a second of compiling each).
+extern const bool limits_filled;
+[[gnu::used]] static const bool* const limits_anchor = &limits_filled;
 
 template <typename T>
 struct NumTraitsFor : Eigen::GenericNumTraits<T> {
