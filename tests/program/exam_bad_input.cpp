@@ -22,23 +22,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bad_input.hpp"
 #include "cli_process.hpp"
 
 namespace fs = std::filesystem;
 using namespace impact3d::test;
 
 namespace {
-
-std::map<std::string, std::string> expected_lines() {
-  std::map<std::string, std::string> m;
-  std::ifstream in(fs::path(IMPACT3D_BAD_INPUT_DIR) / "expected.tsv");
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    const auto tab = line.find('\t');
-    m[line.substr(0, tab)] = line.substr(tab + 1);
-  }
-  return m;
-}
 
 }  // namespace
 

@@ -1,7 +1,8 @@
 // A fresh process whose first use of the multiprecision numbers' std::numeric_limits comes from two
 // threads at once (check_limits_threads runs it many times): exit 0 if both threads read the values the
 // main thread reads afterwards, 1 (naming the value) if either read another. Boost 1.74 fills float100's
-// values on first call and marks them filled first; multiprecision.hpp fills them at start-up.
+// values on first call and marks them filled first; the scalar library fills them at start-up
+// (multiprecision.hpp's limits_filled, defined in thread_caches.cpp).
 #include <atomic>
 #include <cstdio>
 #include <thread>

@@ -18,7 +18,7 @@ void free_thread_caches() {
 
 #if IMPACT3D_MULTIPRECISION
 namespace mp {
-const bool limits_filled = fill_limits<float50>() && fill_limits<float100>();
+const bool limits_filled = (fill_shared_before_threads(), true);
 }  // namespace mp
 #endif
 

@@ -29,7 +29,7 @@ using float100 = boost::multiprecision::number<boost::multiprecision::mpfr_float
 // calling in that window reads 0 or 1 (for epsilon, or for infinity), or a number half copied. Boost
 // fills them at start-up only for the MPFR numbers with expression templates, not for float100 (et_off),
 // so the first rows of a batch at 100 digits on two threads could be solved with epsilon 0 (CI saw such
-// a row differ from solve's). Filling them here, at start-up, before any thread exists, closes the window.
+// a row differ from solve's). Filling them at start-up, before any thread exists, closes the window.
 // float50's (cpp_bin_float, whose default is already et_off) Boost fills itself; they are filled here too
 // so that the guarantee does not rest on that default.
 template <typename T>
