@@ -5,8 +5,9 @@
 # projects: none of impact3d's, so that editing the library rebuilds no header image, and nothing a
 # header image holds depends on a macro impact3d's targets set. One image per kind, for the compiler
 # refuses an image made with other code-generation flags: position-independent code for the libraries
-# (-fPIC where the Python module asks for it), executables' (-fPIE then), and the tests' set, with Catch2 and JSON. In a fuzzers' tree the
-# libraries build without: some carry libFuzzer's coverage and some do not.
+# (-fPIC where the Python module asks for it), executables' (-fPIE then), and the tests' set (their
+# options, with Catch2 and JSON). In a fuzzers' tree the libraries build without: some carry
+# libFuzzer's coverage and some do not.
 option(IMPACT3D_PRECOMPILED_HEADERS "Precompile the common third-party headers (GCC, clang)" ON)
 set(impact3d_precompiled_common
     <algorithm> <array> <atomic> <charconv> <cmath> <cstdint> <cstring> <filesystem> <fstream> <functional> <limits> <map>

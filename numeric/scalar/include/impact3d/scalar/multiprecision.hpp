@@ -24,24 +24,10 @@ using float50 = boost::multiprecision::number<boost::multiprecision::cpp_bin_flo
 using float100 = boost::multiprecision::number<boost::multiprecision::mpfr_float_backend<100, boost::multiprecision::allocate_stack>,
                                                boost::multiprecision::et_off>;
 
-// Boost 1.74 computes std::numeric_limits' epsilon, round_error, min, max, infinity and quiet_NaN of
-// its MPFR numbers on the first call, and marks each computed before computing it: a second thread
-// calling in that window reads 0 or 1 (for epsilon, or for infinity), or a number half copied. Boost
-// fills them at start-up only for the MPFR numbers with expression templates, not for float100 (et_off),
-// so the first rows of a batch at 100 digits on two threads could be solved with epsilon 0 (CI saw such
-// a row differ from solve's). Filling them at start-up, before any thread exists, closes the window.
-// float50's (cpp_bin_float, whose default is already et_off) Boost fills itself; they are filled here too
-// so that the guarantee does not rest on that default.
-template <typename T>
-bool fill_limits() {
-  using L = std::numeric_limits<T>;
-  (void)L::epsilon(), (void)L::round_error(), (void)(L::min)(), (void)(L::max)(), (void)L::infinity(), (void)L::quiet_NaN();
-  return true;
-}
-// The fill runs once, in the start-up of the one object that defines limits_filled
-// (scalar/src/thread_caches.cpp); every object that includes this header keeps a reference to it, so
-// that every program using these numbers links that object and its fill, while no object but that one
-// instantiates the fill (a fifth of a second of compiling each).
+// std::numeric_limits of these numbers, which Boost 1.74 fills on first use and two threads could race
+// on, are filled at start-up by the one object that defines limits_filled (scalar/src/thread_caches.cpp,
+// which says why). Every object that includes this header keeps a reference to it, so that every
+// program using these numbers links that object and its fill, while no other object compiles the fill.
 extern const bool limits_filled;
 [[gnu::used]] static const bool* const limits_anchor = &limits_filled;
 

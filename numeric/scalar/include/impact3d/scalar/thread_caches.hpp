@@ -9,9 +9,9 @@ namespace impact3d {
 void free_thread_caches();
 
 // What the multiprecision numbers fill on first use and share between threads (std::numeric_limits,
-// see multiprecision.hpp) filled now. Called by a thread about to start others, so that the guarantee
-// does not rest on the compiler running multiprecision.hpp's start-up fill before main, which the
-// standard lets it defer.
+// see thread_caches.cpp) filled now. Called by a thread about to start others, so that the guarantee
+// does not rest on the compiler running the start-up fill (multiprecision.hpp's limits_filled) before
+// main, which the standard lets it defer.
 void fill_shared_before_threads();
 
 struct ThreadCaches {
