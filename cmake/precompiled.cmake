@@ -6,8 +6,9 @@
 # header image holds depends on a macro impact3d's targets set. One image per kind, for the compiler
 # refuses an image made with other code-generation flags: position-independent code for the libraries
 # (-fPIC where the Python module asks for it), executables' (-fPIE then), and the tests' set (their
-# options, with Catch2 and JSON). In a fuzzers' tree the libraries build without: some carry
-# libFuzzer's coverage and some do not.
+# options, with Catch2 and JSON). In a fuzzers' tree the library image carries libFuzzer's coverage,
+# as the libraries of IMPACT3D_FUZZ_COVERED and the harnesses do; the program's library, which does
+# not, builds without an image.
 option(IMPACT3D_PRECOMPILED_HEADERS "Precompile the common third-party headers (GCC, clang)" ON)
 set(impact3d_precompiled_common
     <algorithm> <array> <atomic> <charconv> <cmath> <cstdint> <cstring> <filesystem> <fstream> <functional> <limits> <map>
@@ -32,6 +33,9 @@ function(impact3d_precompiled_host kind)
   endif()
   if(kind STREQUAL "library")
     add_library(${host} OBJECT ${PROJECT_SOURCE_DIR}/cmake/precompiled_host.cpp)
+    if(IMPACT3D_BUILD_FUZZ)
+      impact3d_fuzz_coverage(${host})
+    endif()
   else()
     add_executable(${host} EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/cmake/precompiled_main.cpp)
   endif()
@@ -60,7 +64,7 @@ function(impact3d_precompiled target)
     if(ARGV1 STREQUAL "test")
       set(kind test)
     endif()
-  elseif(IMPACT3D_BUILD_FUZZ)
+  elseif(IMPACT3D_BUILD_FUZZ AND NOT (target IN_LIST IMPACT3D_FUZZ_COVERED OR target MATCHES "^harness_"))
     return()
   else()
     set(kind library)

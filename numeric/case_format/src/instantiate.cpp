@@ -1,4 +1,4 @@
-// The case format's solve-and-write at one scalar of scalars.hpp: numeric/CMakeLists.txt compiles this
+// The case format's solve-and-write, and its writers, at one scalar of scalars.hpp: numeric/CMakeLists.txt compiles this
 // file once per scalar with IMPACT3D_SCALAR_INDEX set.
 #include <limits>
 
@@ -27,6 +27,13 @@ std::string render(const CaseSpec& spec, const RenderOptions& o) {
 }
 
 template std::string render<ScalarAt<IMPACT3D_SCALAR_INDEX>>(const CaseSpec&, const RenderOptions&);
+template std::string report_html(const CaseSpec&, const Analysis<ScalarAt<IMPACT3D_SCALAR_INDEX>>&, const std::string&, int,
+                                 const std::vector<ReportFigure>&, const std::string&);
+template std::string report_text(const CaseSpec&, const Analysis<ScalarAt<IMPACT3D_SCALAR_INDEX>>&, const std::string&, int);
+template std::string result_json(const CaseSpec&, const Analysis<ScalarAt<IMPACT3D_SCALAR_INDEX>>&, const std::string&, int, bool,
+                                 const std::function<void(JsonWriter&)>&, bool, JsonPick*,
+                                 const std::function<void(JsonWriter&, std::size_t)>&);
+template std::string result_csv_rows(const CaseSpec&, const Analysis<ScalarAt<IMPACT3D_SCALAR_INDEX>>&, const std::string&, long);
 template Scene<ScalarAt<IMPACT3D_SCALAR_INDEX>> to_scene<ScalarAt<IMPACT3D_SCALAR_INDEX>>(const CaseSpec&);
 template std::vector<Strategy<ScalarAt<IMPACT3D_SCALAR_INDEX>>> to_strategies<ScalarAt<IMPACT3D_SCALAR_INDEX>>(const CaseSpec&);
 

@@ -111,4 +111,12 @@ std::string report_html(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   return out;
 }
 
+// Compiled once per scalar of the list, in case_format/src/instantiate.cpp (with render), not in every
+// object that writes at one of them.
+#define IMPACT3D_EXTERN_REPORT_HTML_(type, name, u) \
+  extern template std::string report_html<type>(const CaseSpec&, const Analysis<type>&, const std::string&, int, \
+                                                 const std::vector<ReportFigure>&, const std::string&);
+IMPACT3D_SCALARS(IMPACT3D_EXTERN_REPORT_HTML_)
+#undef IMPACT3D_EXTERN_REPORT_HTML_
+
 }  // namespace impact3d::case_format

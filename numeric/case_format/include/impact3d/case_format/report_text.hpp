@@ -112,4 +112,11 @@ std::string report_text(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   return out;
 }
 
+// Compiled once per scalar of the list, in case_format/src/instantiate.cpp (with render), not in every
+// object that writes at one of them.
+#define IMPACT3D_EXTERN_REPORT_TEXT_(type, name, u) \
+  extern template std::string report_text<type>(const CaseSpec&, const Analysis<type>&, const std::string&, int);
+IMPACT3D_SCALARS(IMPACT3D_EXTERN_REPORT_TEXT_)
+#undef IMPACT3D_EXTERN_REPORT_TEXT_
+
 }  // namespace impact3d::case_format

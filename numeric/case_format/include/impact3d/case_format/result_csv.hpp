@@ -176,4 +176,11 @@ std::string result_csv_rows(const CaseSpec& c, const Analysis<Scalar>& a, const 
   return std::move(out).take();
 }
 
+// Compiled once per scalar of the list, in case_format/src/instantiate.cpp (with render), not in every
+// object that writes at one of them.
+#define IMPACT3D_EXTERN_RESULT_CSV_(type, name, u) \
+  extern template std::string result_csv_rows<type>(const CaseSpec&, const Analysis<type>&, const std::string&, long);
+IMPACT3D_SCALARS(IMPACT3D_EXTERN_RESULT_CSV_)
+#undef IMPACT3D_EXTERN_RESULT_CSV_
+
 }  // namespace impact3d::case_format

@@ -219,4 +219,13 @@ std::string result_json(const CaseSpec& c, const Analysis<Scalar>& a, const std:
   return std::move(w).str();
 }
 
+// Compiled once per scalar of the list, in case_format/src/instantiate.cpp (with render), not in every
+// object that writes at one of them.
+#define IMPACT3D_EXTERN_RESULT_JSON_(type, name, u) \
+  extern template std::string result_json<type>(const CaseSpec&, const Analysis<type>&, const std::string&, int, bool, \
+                                                 const std::function<void(JsonWriter&)>&, bool, JsonPick*,                \
+                                                 const std::function<void(JsonWriter&, std::size_t)>&);
+IMPACT3D_SCALARS(IMPACT3D_EXTERN_RESULT_JSON_)
+#undef IMPACT3D_EXTERN_RESULT_JSON_
+
 }  // namespace impact3d::case_format
