@@ -1,5 +1,5 @@
-// The case format's solve-and-write, and its writers, at one scalar of scalars.hpp: numeric/CMakeLists.txt compiles this
-// file once per scalar with IMPACT3D_SCALAR_INDEX set.
+// The case format's solve-and-write, and its writers, at one scalar of scalars.hpp:
+// numeric/CMakeLists.txt compiles this file once per scalar with IMPACT3D_SCALAR_INDEX set.
 #include <limits>
 
 #include "impact3d/case_format/read_case.hpp"
