@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <map>
 #include <vector>
 
 #include <fmt/format.h>
@@ -27,10 +26,6 @@
 
 namespace fs = std::filesystem;
 using namespace impact3d::test;
-
-namespace {
-
-}  // namespace
 
 TEST_CASE("every malformed case is rejected with one line naming the field", "[bad-input]") {
   const auto expected = expected_lines();
