@@ -15,6 +15,8 @@
 #include "impact3d/case_format/format_double.hpp"
 #include "impact3d/uncertainty/philox.hpp"
 
+namespace check_case_variants {
+
 namespace {
 
 using namespace impact3d::case_format;
@@ -97,3 +99,5 @@ TEST_CASE("paths that name no number of the case, and variants that break its ru
   const double inf = std::numeric_limits<double>::infinity();
   CHECK_THROWS_AS(v.with(&inf), CaseError);
 }
+
+}  // namespace check_case_variants

@@ -18,6 +18,8 @@
 #include "impact3d/scalar/multiprecision.hpp"
 #include "case_files.hpp"
 
+namespace check_certified {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -410,3 +412,5 @@ TEST_CASE("certified_analyze takes an inertia tensor of the same balls either si
   REQUIRE_FALSE(EnclosureTraits<Ball>::identical(bent.body[1].J_B(2, 0), bent.body[1].J_B(0, 2)));
   CHECK_THROWS_WITH(certified_analyze(bent, st), Catch::Contains("body[1].J_B is not symmetric: entry (0, 2)"));
 }
+
+}  // namespace check_certified

@@ -19,6 +19,8 @@
 #include "impact3d/case_format/json_tree.hpp"
 #include "impact3d/case_format/read_case.hpp"
 
+namespace check_json_tree {
+
 namespace {
 
 using namespace impact3d::case_format;
@@ -194,3 +196,5 @@ TEST_CASE("same_key is string equality, at every key length") {
   CHECK(equal > 50000);
   CHECK(equal < 150000);
 }
+
+}  // namespace check_json_tree

@@ -5,6 +5,8 @@
 
 #include "case_files.hpp"
 
+namespace check_long_double {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -79,3 +81,5 @@ TEST_CASE("double agrees with long double within its rounding bound: examples re
             velocity_scale(s));
   }
 }
+
+}  // namespace check_long_double

@@ -17,6 +17,8 @@
 #include "impact3d/scalar/multiprecision.hpp"
 #include "impact3d/mechanics/precision_warnings.hpp"
 
+namespace check_precision_flags {
+
 using namespace impact3d;
 
 namespace {
@@ -159,3 +161,5 @@ TEST_CASE("the kept inertia conditions are each tensor's own, in any order and o
   CHECK(other.first == 0);
   CHECK(own.second + other.second == 4000);
 }
+
+}  // namespace check_precision_flags

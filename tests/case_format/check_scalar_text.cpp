@@ -19,6 +19,8 @@
 #include "impact3d/scalar/ball.hpp"
 #include "impact3d/scalar/scalars.hpp"
 
+namespace check_scalar_text {
+
 namespace {
 
 template <typename T>
@@ -248,3 +250,5 @@ TEST_CASE("JsonText holds what std::string holds after the same appends", "[io]"
     }
   CHECK(compared == 41 * 81);
 }
+
+}  // namespace check_scalar_text

@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+namespace exam_case_format_doc {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -97,3 +99,5 @@ TEST_CASE("every reference case carries a one-line description, echoed in its re
     }
   CHECK(cases == 32);
 }
+
+}  // namespace exam_case_format_doc

@@ -19,6 +19,8 @@
 #include "impact3d/scalar/multiprecision.hpp"
 #include "case_files.hpp"
 
+namespace exam_exact {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -125,3 +127,5 @@ TEST_CASE("an orientation given as a matrix equals the same orientation given by
   const Scene<double> a = case_format::to_scene<double>(c), b = case_format::to_scene<double>(d);
   CHECK((a.body[0].R_WB - b.body[0].R_WB).cwiseAbs().maxCoeff() <= 4 * eps);
 }
+
+}  // namespace exam_exact

@@ -18,6 +18,8 @@
 
 #include "case_files.hpp"
 
+namespace exam_figure8 {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -79,3 +81,5 @@ TEST_CASE("Figure 8: Wach's plane is horizontal here and cannot reach the Full I
   CHECK(*a.solutions[1].impulse.plane_angle_deg != 0.0);  // phi_FI differs from phi
   CHECK(std::abs(wach.V_rf.z()) > 0.1 * mph);               // swerve even at Wach's CIR
 }
+
+}  // namespace exam_figure8

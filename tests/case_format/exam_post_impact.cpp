@@ -8,6 +8,8 @@
 
 #include "case_files.hpp"
 
+namespace exam_post_impact {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -90,3 +92,5 @@ TEST_CASE("a pulling contact and an energy gain are computed and flagged", "[war
   // And none of the example's own solutions is flagged.
   for (const auto& sol : analyze(s, case_format::to_strategies<double>(c)).solutions) CHECK(sol.warnings.empty());
 }
+
+}  // namespace exam_post_impact

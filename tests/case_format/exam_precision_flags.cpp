@@ -14,6 +14,8 @@
 #include "impact3d/scalar/multiprecision.hpp"
 #include "impact3d/mechanics/precision_warnings.hpp"
 
+namespace exam_precision_flags {
+
 using namespace impact3d;
 
 namespace {
@@ -51,3 +53,5 @@ TEST_CASE("the issue's tensor: every precision short of 50 digits flags it or re
     CHECK(wide.solutions[0].warnings.empty());
   }
 }
+
+}  // namespace exam_precision_flags

@@ -8,6 +8,8 @@
 #include "impact3d/case_format/case_spec.hpp"
 #include "impact3d/case_format/read_uncertainty.hpp"
 
+namespace exam_uncertainty_file {
+
 namespace {
 
 using namespace impact3d::case_format;
@@ -116,3 +118,5 @@ TEST_CASE("bad uncertainty files are refused in one line naming the field") {
                 R"(], "correlations": [{"paths": ["$.a", "$.b"], "rho": 0.1}, {"paths": ["$.b", "$.a"], "rho": 0.2}]})") ==
         "$.correlations[1].paths: this pair is correlated twice");
 }
+
+}  // namespace exam_uncertainty_file

@@ -12,6 +12,8 @@
 
 #include "case_files.hpp"
 
+namespace exam_units {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -74,3 +76,5 @@ TEST_CASE("the US example and its SI twin give the same physics and consistent o
     CHECK(ru["energy"]["loss"].get<double>() * slug_ft2 == Approx(rs["energy"]["loss"].get<double>()).epsilon(tol));
   }
 }
+
+}  // namespace exam_units

@@ -15,6 +15,8 @@
 #include "impact3d/case_format/case_spec.hpp"
 #include "impact3d/case_format/json_tree.hpp"
 
+namespace check_batch_csv_tree {
+
 namespace {
 
 using namespace impact3d;
@@ -269,3 +271,5 @@ TEST_CASE("check: split reads rows as RFC 4180 does, one character at a time") {
   CHECK(refused > 1000);            // unclosed quotes and text after them, exercised
   CHECK(compared - refused > 5000);  // rows read, quoted cells among them
 }
+
+}  // namespace check_batch_csv_tree

@@ -24,6 +24,8 @@
 
 #include "impact3d/cli/row_output.hpp"
 
+namespace check_row_output {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -250,3 +252,5 @@ TEST_CASE("a write that fails says why, and nothing is written after it", "[batc
     ::close(fd);
   }
 }
+
+}  // namespace check_row_output

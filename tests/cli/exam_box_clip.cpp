@@ -8,6 +8,8 @@
 
 #include "impact3d/cli/figures/box_clip.hpp"
 
+namespace exam_box_clip {
+
 using impact3d::cli::Box;
 using impact3d::cli::P3;
 
@@ -56,3 +58,5 @@ TEST_CASE("a line is cut to the cube", "[box_clip]") {
   CHECK(same((*along_x)[0], {0, 0.25, 0.75}));
   CHECK(same((*along_x)[1], {1, 0.25, 0.75}));
 }
+
+}  // namespace exam_box_clip

@@ -22,6 +22,8 @@
 #include "impact3d/mechanics/lean.hpp"
 #include "peer_collisions.hpp"
 
+namespace check_batch {
+
 using namespace impact3d;
 
 namespace {
@@ -455,3 +457,5 @@ TEST_CASE("the lanes leave to solve_lean every row whose ratio, used or reported
   INFO(root_singular << " rows built on a root singular");
   CHECK(root_singular >= 50);
 }
+
+}  // namespace check_batch

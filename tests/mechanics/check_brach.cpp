@@ -4,6 +4,8 @@
 
 #include "plane_closed_forms.hpp"
 
+namespace check_brach {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -108,3 +110,5 @@ TEST_CASE("the Critical Impulse Line direction solves K d ~ e_n", "[brach]") {
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
 }
+
+}  // namespace check_brach

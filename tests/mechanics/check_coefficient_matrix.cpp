@@ -7,6 +7,8 @@
 #include "impact3d/generated/coefficient_matrix_appendix_a.hpp"
 #include "support.hpp"
 
+namespace check_coefficient_matrix {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -74,3 +76,5 @@ TEST_CASE("the Appendix A kernel (c3 corrected) equals K under its assumptions",
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
 }
+
+}  // namespace check_coefficient_matrix

@@ -4,6 +4,8 @@
 
 #include "support.hpp"
 
+namespace check_conservation {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -64,3 +66,5 @@ TEST_CASE("the energy change equals -P . (V_ri + V_rf) / 2", "[conservation]") {
   }
   CHECK(checked == 200);  // nothing in the loop skips a case
 }
+
+}  // namespace check_conservation

@@ -11,6 +11,8 @@
 
 #include "support.hpp"
 
+namespace check_engines {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -112,3 +114,5 @@ TEST_CASE("generated and direct engines agree over 10000 random collisions, in u
   CHECK(E.max <= 32);
   CHECK(R.max <= 32);
 }
+
+}  // namespace check_engines

@@ -21,6 +21,8 @@
 #include "impact3d/mechanics/raw_collision.hpp"
 #include "support.hpp"
 
+namespace check_fixed_float {
+
 using F = impact3d::mp::FixedFloat<334>;
 
 namespace {
@@ -635,3 +637,5 @@ TEST_CASE("solve_lean from raw parameters at 100 digits is the solve in Boost's 
   CHECK(solved > 100);
   CHECK(not_approaching > 100);
 }
+
+}  // namespace check_fixed_float

@@ -4,6 +4,8 @@
 
 #include "support.hpp"
 
+namespace check_full_impact {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -89,3 +91,5 @@ TEST_CASE("Full Impact equals eqs 10-12 (Cramer's rule, written out)", "[full]")
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
 }
+
+}  // namespace check_full_impact

@@ -4,6 +4,8 @@
 
 #include "support.hpp"
 
+namespace check_invariance {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -88,3 +90,5 @@ TEST_CASE("swapping which vehicle is called 1, with the normal reversed, changes
   }
   CHECK(checked == 150);  // nothing in the loop skips a case
 }
+
+}  // namespace check_invariance

@@ -23,7 +23,8 @@
 #include "impact3d/mechanics/rotation.hpp"
 #include "support.hpp"
 
-// Every allocation of this program is counted, so that the lean path's "no heap per case" is measured.
+// Every allocation of the program (mechanics_tests: a replacement is global) is counted, so that the
+// lean path's "no heap per case" is measured.
 // Not under AddressSanitizer, whose own operator new this replacement would mismatch: that build runs
 // the comparisons only.
 #ifndef IMPACT3D_SANITIZED
@@ -39,6 +40,8 @@ void* operator new(std::size_t n) {
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 #endif
+
+namespace check_lean {
 
 using namespace impact3d;
 using namespace impact3d::test;
@@ -497,3 +500,5 @@ TEST_CASE("The condition bound in double is above tr(M) tr(M^-1) at 100 digits, 
   nan(1, 1) = std::numeric_limits<F>::quiet_NaN();
   CHECK(!rounding::spd_condition_bound_in_double(nan));
 }
+
+}  // namespace check_lean

@@ -15,6 +15,8 @@
 #include "impact3d/mechanics/analysis.hpp"
 #include "peer_collisions.hpp"
 
+namespace check_naive_peers {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -116,3 +118,5 @@ TEST_CASE("the NumPy pc-crash peer agrees with impact3d on the same collisions",
   std::filesystem::remove_all(dir);
   check_agreement(agree(cs, peer));
 }
+
+}  // namespace check_naive_peers

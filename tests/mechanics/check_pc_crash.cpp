@@ -6,6 +6,8 @@
 
 #include "plane_closed_forms.hpp"
 
+namespace check_pc_crash {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -129,3 +131,5 @@ TEST_CASE("at mu = CIR the sliding along the phi_FI plane vanishes", "[pc-crash]
   // a pulling Full Impact, GIR < 0, is among them). At least 90% must be checked.
   CHECK(checked >= 2 * 180);
 }
+
+}  // namespace check_pc_crash

@@ -5,6 +5,8 @@
 
 #include "plane_closed_forms.hpp"
 
+namespace check_planar_limit {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -109,3 +111,5 @@ TEST_CASE("planar limit: impulse ratio, critical ratio and full impact match a 2
   // draws (140 of these 300): nothing to collide. At least 120 must be checked.
   CHECK(checked >= 120);
 }
+
+}  // namespace check_planar_limit

@@ -12,6 +12,8 @@
 #include "impact3d/scalar/planar_norm.hpp"
 #include "support.hpp"
 
+namespace check_planar_norm {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -111,3 +113,5 @@ TEST_CASE("planar_norm at other scalars is their own hypot", "[planar_norm]") {
   CHECK(h.derivatives()[0] == 0.6);  // 3/5 and -4/5, each one correctly rounded division
   CHECK(h.derivatives()[1] == -0.8);
 }
+
+}  // namespace check_planar_norm

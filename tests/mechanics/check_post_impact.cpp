@@ -4,6 +4,8 @@
 
 #include "plane_closed_forms.hpp"
 
+namespace check_post_impact {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -59,3 +61,5 @@ TEST_CASE("the figure's volume letters lie in the volumes the post-impact state 
   }
   CHECK(checked == 800);
 }
+
+}  // namespace check_post_impact

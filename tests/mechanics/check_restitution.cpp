@@ -3,6 +3,8 @@
 
 #include "support.hpp"
 
+namespace check_restitution {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -22,3 +24,5 @@ TEST_CASE("post-impact normal relative velocity is -eps times the initial one, e
   }
   CHECK(checked == 300);  // nothing in the loop skips a case
 }
+
+}  // namespace check_restitution

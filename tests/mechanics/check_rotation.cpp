@@ -10,6 +10,8 @@
 #include "impact3d/scalar/multiprecision.hpp"
 #include "support.hpp"
 
+namespace check_rotation {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -138,3 +140,5 @@ TEST_CASE("at 100 digits SinCosRadians takes its argument in place of either res
   }
   CHECK(checked == 4);
 }
+
+}  // namespace check_rotation

@@ -5,6 +5,8 @@
 
 #include "plane_closed_forms.hpp"
 
+namespace check_wach {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -80,3 +82,4 @@ TEST_CASE("Wach capped at its GIR reverses in-plane sliding by eps, like Full Im
   CHECK(checked == 300);  // nothing in the loop skips a case
 }
 
+}  // namespace check_wach

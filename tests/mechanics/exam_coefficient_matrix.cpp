@@ -4,6 +4,8 @@
 
 #include "support.hpp"
 
+namespace exam_coefficient_matrix {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -29,3 +31,5 @@ TEST_CASE("K of two equal spheres struck on their x axes, derived by hand", "[K]
   // 1/500 and m' 1/500 each round once, and the inverse of J is one solve: a few eps of |K| = O(1).
   CHECK((K - ref).cwiseAbs().maxCoeff() <= 4 * eps);
 }
+
+}  // namespace exam_coefficient_matrix

@@ -4,6 +4,8 @@
 
 #include "support.hpp"
 
+namespace exam_pc_crash {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -41,3 +43,5 @@ TEST_CASE("head-on along the line of centres: no contact-plane impulse, warned, 
     CHECK(sol.impulse.P_C.x() == Approx(720 * 1.2 * 25).epsilon(8 * eps));
   }
 }
+
+}  // namespace exam_pc_crash

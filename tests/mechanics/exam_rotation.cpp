@@ -8,6 +8,8 @@
 
 #include "support.hpp"
 
+namespace exam_rotation {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -39,3 +41,5 @@ TEST_CASE("contact frame from vectors is right-handed and keeps the normal", "[r
   CHECK(std::abs(R.col(1).dot(normal.cross(tangent).normalized())) <= 8 * eps);
   CHECK(R.col(1).dot(tangent) > 0);
 }
+
+}  // namespace exam_rotation

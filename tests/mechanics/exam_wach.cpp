@@ -6,6 +6,8 @@
 
 #include "support.hpp"
 
+namespace exam_wach {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -71,3 +73,5 @@ TEST_CASE("Wach with no initial sliding: the fallback axis is directed so that t
   CHECK(undefined >= 2280);  // of 2 400
   CHECK(flipped >= 600);
 }
+
+}  // namespace exam_wach

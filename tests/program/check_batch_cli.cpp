@@ -20,6 +20,8 @@
 
 #include "cli_process.hpp"
 
+namespace check_batch_cli {
+
 using namespace impact3d::test;
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -654,3 +656,5 @@ TEST_CASE("batch's CSV cells are the JSON document's values, escapes, strategies
   CHECK(compared == static_cast<int>(2 * 5 * columns));  // two precisions, five strategies
   fs::remove_all(dir);
 }
+
+}  // namespace check_batch_cli

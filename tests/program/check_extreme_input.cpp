@@ -13,6 +13,8 @@
 
 #include "cli_process.hpp"
 
+namespace check_extreme_input {
+
 namespace fs = std::filesystem;
 using namespace impact3d::test;
 
@@ -77,3 +79,5 @@ TEST_CASE("extreme cases: no NaN or infinity without a warning, text and JSON ag
   // least 20.
   CHECK(solved >= 20);
 }
+
+}  // namespace check_extreme_input

@@ -13,6 +13,8 @@
 
 #include "cli_process.hpp"
 
+namespace check_montecarlo_cli {
+
 using namespace impact3d::test;
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -312,3 +314,5 @@ TEST_CASE("the figures draw the run's own numbers: histogram counts and percenti
   CHECK_THAT(bad.err, Catch::StartsWith("impact3d: error: --scatter: \"vehicles[2].pdof_deg\" is not an output"));
   fs::remove_all(dir);
 }
+
+}  // namespace check_montecarlo_cli

@@ -26,6 +26,8 @@
 
 #include "cli_process.hpp"
 
+namespace check_output_files {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -308,3 +310,4 @@ TEST_CASE("a run ended by a signal leaves no temporary; a FIFO whose reader quit
   fs::remove_all(dir);
 }
 
+}  // namespace check_output_files

@@ -16,6 +16,8 @@
 
 #include "cli_process.hpp"
 
+namespace check_reconstruct_cli {
+
 using namespace impact3d::test;
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -221,3 +223,5 @@ TEST_CASE("bad evidence files and options: one line naming the file and the fiel
   CHECK(usage.out.empty());
   fs::remove_all(dir);
 }
+
+}  // namespace check_reconstruct_cli

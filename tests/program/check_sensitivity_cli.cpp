@@ -12,6 +12,8 @@
 #include "bad_input.hpp"
 #include "cli_process.hpp"
 
+namespace check_sensitivity_cli {
+
 using namespace impact3d::test;
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -103,3 +105,5 @@ TEST_CASE("the plot option draws a tornado of each vehicle's delta-V per strateg
     for (int v = 0; v < 2; ++v) CHECK(fs::exists(dir / fmt::format("sens{}_tornado_dv{}.svg", k, v)));
   fs::remove_all(dir);
 }
+
+}  // namespace check_sensitivity_cli

@@ -24,6 +24,8 @@
 #include "bad_input.hpp"
 #include "cli_process.hpp"
 
+namespace exam_bad_input {
+
 namespace fs = std::filesystem;
 using namespace impact3d::test;
 
@@ -228,3 +230,5 @@ TEST_CASE("a strategy with no solution is named by its path", "[bad-input]") {
   }
   fs::remove_all(dir);
 }
+
+}  // namespace exam_bad_input

@@ -23,6 +23,8 @@
 #include "impact3d/mechanics/decisions.hpp"
 #include "impact3d/scalar/exact.hpp"
 
+namespace exam_certified {
+
 using namespace impact3d;
 using namespace impact3d::test;
 namespace fs = std::filesystem;
@@ -292,3 +294,5 @@ TEST_CASE("a quantity whose ball holds zero takes the zero branch, undecided, wi
   CHECK(undecided);
   CHECK(alternative);
 }
+
+}  // namespace exam_certified

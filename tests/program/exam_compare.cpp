@@ -23,12 +23,14 @@
 
 #include "cli_process.hpp"
 
+namespace exam_compare {
+
 namespace fs = std::filesystem;
 using namespace impact3d::test;
 
 namespace {
 
-const fs::path kWork = fs::temp_directory_path() / fmt::format("impact3d-compare-{}", ::getpid());
+const fs::path kWork = fresh_directory("impact3d-compare");
 const std::string kReferenceDir = IMPACT3D_REFERENCE_DIR;
 const std::string kReference = kReferenceDir + "/fig8_side_impact.json";
 
@@ -463,3 +465,5 @@ TEST_CASE("a CSV with the option --all is refused: --all asks for every field of
                                       write("all.csv", "case,result,regime\nfig8_side_impact,0,full\n"))),
                   "all.csv: --all requires every field of a result file");
 }
+
+}  // namespace exam_compare

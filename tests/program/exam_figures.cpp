@@ -19,13 +19,15 @@
 
 #include "cli_process.hpp"
 
+namespace exam_figures {
+
 namespace fs = std::filesystem;
 using namespace impact3d::test;
 
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-const fs::path kWork = fs::temp_directory_path() / fmt::format("impact3d-figures-{}", ::getpid());
+const fs::path kWork = fresh_directory("impact3d-figures");
 
 // The gnuplot single-quoted strings of a script line, unescaped ('' is one quote).
 std::vector<std::string> quoted_strings(const std::string& line) {
@@ -398,3 +400,5 @@ TEST_CASE("given dimensions draw the box: a level vehicle's outline is its lengt
   CHECK(std::fabs(y1 - cg[1] - 0.9) <= 1e-14);
   CHECK(std::fabs(cg[1] - y0 - 0.9) <= 1e-14);
 }
+
+}  // namespace exam_figures

@@ -18,12 +18,14 @@
 
 #include "cli_process.hpp"
 
+namespace exam_plot {
+
 namespace fs = std::filesystem;
 using namespace impact3d::test;
 
 namespace {
 
-const fs::path kWork = fs::temp_directory_path() / fmt::format("impact3d-plot-{}", ::getpid());
+const fs::path kWork = fresh_directory("impact3d-plot");
 
 // Rows of NAME.points.csv after the header: label and numbers.
 std::vector<std::pair<std::string, std::vector<double>>> points(const fs::path& p) { return labelled_rows(slurp(p)); }
@@ -221,3 +223,5 @@ TEST_CASE("report: the case author's text is escaped into the page, never markup
   CHECK(exact.err.find("--precision") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "exact.html"));
 }
+
+}  // namespace exam_plot

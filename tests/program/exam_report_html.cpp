@@ -13,6 +13,8 @@
 
 #include "cli_process.hpp"
 
+namespace exam_report_html {
+
 namespace fs = std::filesystem;
 using namespace impact3d::test;
 
@@ -111,3 +113,5 @@ TEST_CASE("the Figure 8 report opens in Chromium without console messages and sh
   CHECK(png.size() > 50000);  // a page of tables and figures, not a blank one
   fs::remove_all(dir);
 }
+
+}  // namespace exam_report_html

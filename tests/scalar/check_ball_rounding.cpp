@@ -15,6 +15,8 @@
 
 #include "impact3d/scalar/ball_rounding.hpp"
 
+namespace check_ball_rounding {
+
 using impact3d::mp::round_ball;
 
 namespace {
@@ -238,3 +240,5 @@ TEST_CASE("round_ball at a tie a radius of many units away", "[ball_rounding]") 
   CHECK(mpfr_equal_p(num.out, expected));
   mpfr_clear(expected);
 }
+
+}  // namespace check_ball_rounding

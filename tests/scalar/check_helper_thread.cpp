@@ -10,6 +10,8 @@
 
 #include "impact3d/scalar/helper_thread.hpp"
 
+namespace check_helper_thread {
+
 using impact3d::HelperThread;
 
 TEST_CASE("every task started runs once, and is done when wait returns", "[helper]") {
@@ -57,3 +59,5 @@ TEST_CASE("a helper destroyed with its task running finishes the task first", "[
   }
   CHECK(finished == helpers);
 }
+
+}  // namespace check_helper_thread

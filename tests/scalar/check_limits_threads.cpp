@@ -10,6 +10,8 @@
 
 #include "cli_process.hpp"
 
+namespace check_limits_threads {
+
 TEST_CASE("two threads reading the multiprecision limits first read the right values", "[threads]") {
   constexpr int kRuns = 200;
   int runs = 0;
@@ -21,3 +23,5 @@ TEST_CASE("two threads reading the multiprecision limits first read the right va
   }
   CHECK(runs == kRuns);
 }
+
+}  // namespace check_limits_threads

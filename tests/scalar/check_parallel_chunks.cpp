@@ -12,6 +12,8 @@
 
 #include "impact3d/scalar/parallel_chunks.hpp"
 
+namespace check_parallel_chunks {
+
 using impact3d::ParallelChunks;
 
 namespace {
@@ -113,3 +115,5 @@ TEST_CASE("the caller's first hook runs once with the helpers started; report se
     CHECK(firsts[0] == jobs - 1);
   }
 }
+
+}  // namespace check_parallel_chunks

@@ -18,6 +18,8 @@
 
 #include "support.hpp"
 
+namespace check_json_pick {
+
 namespace {
 
 using namespace impact3d::case_format;
@@ -143,3 +145,5 @@ TEST_CASE("picked spans read as the parser's values at their paths, and writing 
   CHECK(spans_checked > 10000);
   CHECK(strings_checked > 100);
 }
+
+}  // namespace check_json_pick

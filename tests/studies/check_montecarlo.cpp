@@ -28,6 +28,8 @@
 #include "impact3d/studies/precision.hpp"
 #include "impact3d/case_format/strategy_option.hpp"
 
+namespace check_montecarlo {
+
 namespace {
 
 using namespace impact3d;
@@ -384,3 +386,5 @@ TEST_CASE("an uncertainty file that can break the case is refused before any sam
     CHECK_THAT(e.line(), Catch::StartsWith("$.samples: 10000000 samples of 4 results would take 22278 MiB"));
   }
 }
+
+}  // namespace check_montecarlo

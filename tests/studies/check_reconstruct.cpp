@@ -32,6 +32,8 @@
 #include "impact3d/case_format/to_scene.hpp"
 #include "support.hpp"
 
+namespace check_reconstruct {
+
 namespace {
 
 using namespace impact3d;
@@ -548,3 +550,5 @@ TEST_CASE("a central collinear plastic impact leaves m1 speed0 + m0 speed1 undet
   const Reconstruction good = reconstruct(fig8, read_evidence(velocity_evidence(fw, 10, 10, 0.1, 0.01)), o);
   CHECK(good.best.p_value > 0.99);
 }
+
+}  // namespace check_reconstruct

@@ -15,6 +15,8 @@
 #include "impact3d/studies/precision.hpp"
 #include "case_files.hpp"
 
+namespace check_report_text {
+
 using namespace impact3d;
 using namespace impact3d::test;
 using nlohmann::json;
@@ -293,3 +295,5 @@ TEST_CASE("names too long for a line are wrapped or cut, never past 80 columns",
   CHECK(check_summary(text, json::parse(render_as(spec, "json", std::nullopt))).blocks ==
         static_cast<int>(spec.strategies.size()));
 }
+
+}  // namespace check_report_text

@@ -28,6 +28,8 @@
 #include "result_csv_from_document.hpp"
 #include "case_files.hpp"
 
+namespace check_result_csv {
+
 namespace {
 
 using namespace impact3d::case_format;
@@ -195,3 +197,5 @@ TEST_CASE("the result CSV's header is the one documented") {
   CHECK(std::count(error.begin(), error.end(), ',') == std::count(expected.begin(), expected.end(), ',') + 1);
   CHECK(error.rfind("9,,\"$.x: a \"\"problem\"\", quoted\",", 0) == 0);
 }
+
+}  // namespace check_result_csv

@@ -23,6 +23,8 @@
 #include "impact3d/mechanics/analysis.hpp"
 #include "support.hpp"
 
+namespace check_sensitivity {
+
 namespace {
 
 using namespace impact3d;
@@ -137,3 +139,5 @@ TEST_CASE("every derivative of every example agrees with 100-digit central diffe
     WARN((engine == Engine::direct ? "direct" : "generated") << ": worst " << worst.error << " eps at " << worst.where);
   }
 }
+
+}  // namespace check_sensitivity

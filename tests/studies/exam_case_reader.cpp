@@ -12,6 +12,8 @@
 #include "impact3d/studies/precision.hpp"
 #include "support.hpp"
 
+namespace exam_case_reader {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -163,3 +165,5 @@ TEST_CASE("zero in any spelling is zero, and a literal with a digit that is not 
           std::string::npos);
   }
 }
+
+}  // namespace exam_case_reader

@@ -11,6 +11,8 @@
 #include "impact3d/case_format/to_scene.hpp"
 #include "case_files.hpp"
 
+namespace exam_reconstruction {
+
 using namespace impact3d;
 using namespace impact3d::test;
 
@@ -192,3 +194,5 @@ TEST_CASE("output units: km/h and mph from an SI case, SI from a US case", "[rec
   CHECK(compared == static_cast<int>(in_us["results"].size()) * 6);
   CHECK(compared > 0);
 }
+
+}  // namespace exam_reconstruction

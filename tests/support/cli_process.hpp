@@ -20,6 +20,14 @@
 
 namespace impact3d::test {
 
+// A directory of this process's own under the system's temporary one, emptied: a process of an earlier
+// run with the same pid may have left files there, and the tests assert what the program wrote.
+inline std::filesystem::path fresh_directory(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / fmt::format("{}-{}", name, ::getpid());
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
 inline std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
   std::ostringstream ss;

@@ -14,6 +14,8 @@
 #include "impact3d/uncertainty/distribution.hpp"
 #include "impact3d/uncertainty/philox.hpp"
 
+namespace check_distribution {
+
 namespace {
 
 using namespace impact3d::uncertainty;
@@ -156,3 +158,5 @@ TEST_CASE("the kinds' names are the uncertainty file's") {
   Kind k{};
   CHECK_FALSE(kind_of("gaussian", k));
 }
+
+}  // namespace check_distribution

@@ -17,6 +17,8 @@
 #include "impact3d/uncertainty/philox.hpp"
 #include "impact3d/uncertainty/sampler.hpp"
 
+namespace check_sampler {
+
 namespace {
 
 using namespace impact3d::uncertainty;
@@ -136,3 +138,5 @@ TEST_CASE("correlations that are not positive definite are refused, naming the i
   CHECK_THROWS_AS(Sampler(inputs, {{0, 0, 0.5}}, 1), std::invalid_argument);
   CHECK_THROWS_AS(Sampler(inputs, {{0, 4, 0.5}}, 1), std::invalid_argument);
 }
+
+}  // namespace check_sampler

@@ -13,6 +13,8 @@
 #include "impact3d/uncertainty/philox.hpp"
 #include "impact3d/uncertainty/portable_math.hpp"
 
+namespace check_sampling {
+
 namespace {
 
 using namespace impact3d::uncertainty;
@@ -159,3 +161,5 @@ TEST_CASE("uniform draws are (k + 1/2) / 2^52, inside (0, 1), and their normal s
   CHECK(uniform_open(42, 0, 3) != uniform_open(42, 0, 4));
   CHECK(uniform_open(42, 0, 3, 0) != uniform_open(42, 0, 3, 1));
 }
+
+}  // namespace check_sampling

@@ -19,6 +19,8 @@
 #include "impact3d/uncertainty/philox.hpp"
 #include "impact3d/uncertainty/portable_math.hpp"
 
+namespace check_truncated_tail {
+
 namespace {
 
 using namespace impact3d::uncertainty;
@@ -225,3 +227,5 @@ TEST_CASE("a window too narrow or too far out for double precision is refused, o
   CHECK_FALSE(truncated_sampling_problem(window(0, 1, -1e-14, 1e-14)).empty());
   CHECK(truncated_sampling_problem(window(0, 1, -1e-8, 1e-8)).empty());
 }
+
+}  // namespace check_truncated_tail

@@ -5,6 +5,8 @@
 
 #include "impact3d/uncertainty/philox.hpp"
 
+namespace exam_philox {
+
 using impact3d::uncertainty::philox4x32_10;
 using impact3d::uncertainty::PhiloxCounter;
 using impact3d::uncertainty::PhiloxKey;
@@ -24,3 +26,5 @@ TEST_CASE("Philox4x32-10 gives Random123's known answers") {
   // And at compile time, where the function is also used.
   static_assert(philox4x32_10(known[2].counter, known[2].key) == known[2].out);
 }
+
+}  // namespace exam_philox

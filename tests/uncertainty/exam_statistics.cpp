@@ -12,6 +12,8 @@
 
 #include "impact3d/uncertainty/statistics.hpp"
 
+namespace exam_statistics {
+
 using namespace impact3d::uncertainty;
 
 namespace {
@@ -150,3 +152,5 @@ TEST_CASE("the percentiles read from selected order statistics are those of the 
     }
   CHECK(checked == 9 * 6);
 }
+
+}  // namespace exam_statistics

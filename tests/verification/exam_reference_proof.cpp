@@ -15,6 +15,8 @@
 #include "impact3d/scalar/multiprecision.hpp"
 #include "impact3d/verification/reference_proof.hpp"
 
+namespace exam_reference_proof {
+
 using namespace impact3d;
 
 namespace {
@@ -137,3 +139,5 @@ TEST_CASE("a result is proven on one branch throughout: an alternative's, or non
   CHECK(mixed.document.empty());
   CHECK(mixed.failure.rfind("results[0].", 0) == 0);
 }
+
+}  // namespace exam_reference_proof

@@ -6,6 +6,8 @@
 
 #include "impact3d/verification/verify.hpp"
 
+namespace exam_verify_certify {
+
 using namespace impact3d;
 
 TEST_CASE("verify --certify proves the stated bounds on the examples and catches an injected error", "[certified]") {
@@ -16,3 +18,5 @@ TEST_CASE("verify --certify proves the stated bounds on the examples and catches
   o.corrupt_double = 1e-9;
   CHECK(verification::verify(o) == 1);
 }
+
+}  // namespace exam_verify_certify

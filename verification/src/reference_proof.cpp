@@ -73,7 +73,7 @@ void for_each_other(const json& node, const std::string& path, std::initializer_
 }
 
 // A field of the reference: a number's literal, or another value (a string, a boolean, a null).
-struct Field {
+struct ReferenceField {
   std::string path;
   std::string literal;     // numbers
   const json* value = nullptr;  // the rest
@@ -101,16 +101,16 @@ class Prover {
     proven_ = 0, other_branch_ = 0, widest_ = 0, zero_reach_ = 0;
     const json doc = json::parse(text);
     // Fields by scope: the top level (-1) and each result.
-    std::map<long, std::vector<Field>> scopes;
+    std::map<long, std::vector<ReferenceField>> scopes;
     double largest = 0;
     for (const auto& n : case_format::number_literals(text)) {
       if (n.null || excluded(n.path)) continue;
-      Field f{n.path, text.substr(n.begin, n.end - n.begin), nullptr};
+      ReferenceField f{n.path, text.substr(n.begin, n.end - n.begin), nullptr};
       largest = std::max(largest, std::fabs(std::strtod(f.literal.c_str(), nullptr)));
       scopes[scope(n.path)].push_back(std::move(f));
     }
     for_each_other(doc, "", {"certified", "decisions", "warnings", "precision", "engine"},
-                   [&](const std::string& path, const json& v) { scopes[scope(path)].push_back(Field{path, {}, &v}); });
+                   [&](const std::string& path, const json& v) { scopes[scope(path)].push_back(ReferenceField{path, {}, &v}); });
     // The 100-digit solve's rounding noise: far below what its 100 digits resolve of the document's
     // largest number, and far above the noise itself (10^-98 of it at most).
     noise_bound_ = kNoiseFraction * largest;
@@ -204,7 +204,7 @@ class Prover {
   }
 
   // Every field of one scope against the branch at `branch` (the scope's own path, or an alternative's).
-  BranchCheck on_branch(const std::vector<Field>& fields, const std::string& own, const std::string& branch) const {
+  BranchCheck on_branch(const std::vector<ReferenceField>& fields, const std::string& own, const std::string& branch) const {
     BranchCheck c;
     for (const auto& f : fields) {
       const std::string there = branch + f.path.substr(own.size());
@@ -228,7 +228,7 @@ class Prover {
     return c;
   }
 
-  bool number(const Field& f, const std::string& there, BranchCheck& c) const {
+  bool number(const ReferenceField& f, const std::string& there, BranchCheck& c) const {
     const auto it = enclosures_.find(there);
     if (it == enclosures_.end() || !it->second[0].is_string() || !it->second[1].is_string()) return false;
     const rational lo = exact(it->second[0].get<std::string>()), hi = exact(it->second[1].get<std::string>());

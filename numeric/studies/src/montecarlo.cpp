@@ -31,13 +31,13 @@
 #include "impact3d/mechanics/analysis.hpp"
 #include "impact3d/scalar/parallel_chunks.hpp"
 #include "impact3d/uncertainty/portable_math.hpp"
+#include "not_a_number.hpp"
 
 namespace impact3d::studies {
 using namespace case_format;  // the studies are written in the case format's terms
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::uint64_t kChunk = 64;  // samples a thread takes at once
 // The value an unbounded end of a distribution is probed at: inside the case's magnitude limit (1e12),
 // outside any field's bounds.

@@ -13,13 +13,12 @@
 #include "impact3d/studies/angle_difference.hpp"
 #include "impact3d/studies/sensitivity.hpp"
 #include "impact3d/uncertainty/moments.hpp"
+#include "not_a_number.hpp"
 
 namespace impact3d::studies {
 using namespace case_format;  // the studies are written in the case format's terms
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The quantity an output measures, so that an output that is zero throughout (the normal sliding of a
 // planar case) is compared at the scale of its kind rather than at its own rounding noise.

@@ -17,13 +17,13 @@
 #include "impact3d/studies/reconstruct.hpp"
 #include "impact3d/mechanics/decisions.hpp"
 #include "impact3d/mechanics/strategies/list.hpp"
+#include "not_a_number.hpp"
 
 namespace impact3d::studies::reconstruct_model {
 using namespace case_format;  // the studies are written in the case format's terms
 
 using Vector = Eigen::VectorXd;
 using Matrix = Eigen::MatrixXd;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The two branches of a strategy's regime, as the mechanics name the decision; none where the strategy
 // decides no regime from the inputs.

@@ -13,13 +13,12 @@
 #include "impact3d/case_format/scalar_text.hpp"
 #include "impact3d/case_format/to_scene.hpp"
 #include "impact3d/mechanics/dual_analysis.hpp"
+#include "not_a_number.hpp"
 
 namespace impact3d::studies {
 using namespace case_format;  // the studies are written in the case format's terms
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The deciding quantity of a strategy's regime, limit - mu, with its name; none where the strategy
 // decides no regime from the inputs.
