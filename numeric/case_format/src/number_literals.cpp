@@ -10,7 +10,7 @@ namespace {
 
 namespace od = simdjson::ondemand;
 
-struct LiteralWalk {
+struct Walk {
   const char* base;
   std::vector<NumberLiteral>& out;
 
@@ -68,7 +68,7 @@ std::vector<NumberLiteral> number_literals(std::string_view own_document) {
   od::value root;
   if (parser.iterate(padded).get(doc) || doc.get_value().get(root))
     throw std::logic_error("a document of impact3d's own does not parse");
-  LiteralWalk{padded.data(), out}.value(root, "");
+  Walk{padded.data(), out}.value(root, "");
   return out;
 }
 
