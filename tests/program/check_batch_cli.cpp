@@ -157,8 +157,7 @@ Compared compare_with_solve(const Input& in, const std::vector<std::string>& row
 }  // namespace
 
 TEST_CASE("batch answers each case line with solve's document or solve's error, in order, at any --jobs", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch");
   const Input in = make_input(dir, 1);
   const Run one = run_argv({"batch", in.path.string(), "--jobs", "1"});
   INFO(one.err);
@@ -192,8 +191,7 @@ TEST_CASE("batch answers each case line with solve's document or solve's error, 
 // The rows are read, solved and written in blocks of 2048 (cli/src/batch.cpp): the order must hold across
 // them, whichever thread solved which block.
 TEST_CASE("batch keeps the input's order across blocks at any --jobs", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-blocks-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch-blocks");
   const Input in = make_input(dir, 110);
   REQUIRE(in.good + in.bad > 2 * 2048 + 1);  // three blocks at least
   std::vector<std::string> names;  // of each line's case, by line
@@ -229,8 +227,7 @@ TEST_CASE("batch keeps the input's order across blocks at any --jobs", "[batch]"
 // --precision applies to every row: each floating precision the double tests above do not cover, row
 // by row against solve at that precision (exact is compared in the CSV test below).
 TEST_CASE("batch at long double, float128, 50 and 100 digits answers each row as solve does", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-precision-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch-precision");
   Input in;
   in.path = dir / "cases.jsonl";
   {
@@ -261,8 +258,7 @@ TEST_CASE("batch at long double, float128, 50 and 100 digits answers each row as
 }
 
 TEST_CASE("batch refuses bad options as solve does, and a line longer than a case file may be", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-opt-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch-opt");
   const fs::path f = dir / "long.jsonl";
   {
     std::ofstream out(f, std::ios::binary);
@@ -308,8 +304,7 @@ std::string temporary_of(const fs::path& target) {
 }  // namespace
 
 TEST_CASE("batch stopped midway by SIGTERM leaves only whole rows, numbered from the first", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-kill-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch-kill");
   const Input in = make_input(dir, 2);
   const fs::path out_file = dir / "out.jsonl", fifo = dir / "cases.fifo";
   // The input comes through a FIFO holding the first half of the lines and kept open: the program
@@ -399,8 +394,7 @@ TEST_CASE("batch writes a file past 64 MiB, its end straight to the disk, byte f
 }
 
 TEST_CASE("batch whose output cannot be written says why and exits 3", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-full-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch-full");
   const fs::path cases = dir / "cases.jsonl";
   std::ofstream(cases, std::ios::binary) << json::parse(slurp(fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json")).dump() << "\n";
   // /dev/full refuses every write with ENOSPC, as a full disk does.
@@ -451,8 +445,7 @@ json::json_pointer pointer_of(const std::string& path) {
 }  // namespace
 
 TEST_CASE("batch reads a CSV whose header names case paths, and writes solve's numbers as CSV", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-csv-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch-csv");
   const std::string variants = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_variants.csv";
 
   // Row 2 of the bundled CSV is this case, written by hand from its columns.
@@ -525,8 +518,7 @@ TEST_CASE("batch reads a CSV whose header names case paths, and writes solve's n
 }
 
 TEST_CASE("batch refuses a CSV header that does not spell a case's paths", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-csvh-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch-csvh");
   const std::vector<std::pair<std::string, std::string>> headers = {
       {"name,vehicles[0].mass[", "header column 2 (\"vehicles[0].mass[\"): expected an index [n] in the path"},
       {"name,vehicles[1].mass", "header: no column for $.vehicles[0]"},
@@ -550,8 +542,7 @@ TEST_CASE("batch refuses a CSV header that does not spell a case's paths", "[bat
 }
 
 TEST_CASE("batch answers a case piped in before the next arrives", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-pipe-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch-pipe");
   const fs::path fifo = dir / "cases", out = dir / "out.jsonl";
   REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
   const std::string one_case = json::parse(slurp(fs::path(IMPACT3D_EXAMPLES_DIR) / "fig8_side_impact.json")).dump() + "\n";
@@ -581,8 +572,7 @@ TEST_CASE("batch answers a case piped in before the next arrives", "[batch]") {
 // of the offset frontal case (one with a warning, one with a limit choice). Every cell against the JSON
 // Lines document of the same row.
 TEST_CASE("batch's CSV cells are the JSON document's values, escapes, strategies and warnings included", "[batch]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-batch-pick-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-batch-pick");
   json c = json::parse(slurp(std::string(IMPACT3D_EXAMPLES_DIR) + "/offset_frontal.json"));
   c["name"] = "q\"b\\s\nn\x01t\tc, \xC3\xA9";
   const fs::path in = dir / "cases.jsonl";

@@ -28,8 +28,7 @@ TEST_CASE("extreme cases: no NaN or infinity without a warning, text and JSON ag
     const double sign = u(g) < 0.5 ? -1 : 1;
     return sign * decades(lo, hi);
   };
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-extreme-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-extreme");
   int solved = 0, rejected = 0;
   for (int i = 0; i < 60; ++i) {
     std::string vehicles;

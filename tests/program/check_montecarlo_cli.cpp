@@ -25,8 +25,7 @@ const std::string kCase = IMPACT3D_EXAMPLES_DIR "/fig8_side_impact.json";
 const std::string kUncertainty = IMPACT3D_EXAMPLES_DIR "/uncertainty/fig8_side_impact.json";
 
 fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-mc-{}", ::getpid());
-  fs::create_directories(dir);
+  static const fs::path dir = fresh_directory("impact3d-mc");
   return dir;
 }
 

@@ -29,8 +29,7 @@ const std::string kCase = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impac
 const std::string kEvidence = std::string(IMPACT3D_EXAMPLES_DIR) + "/evidence/fig8_side_impact.json";
 
 fs::path scratch() {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-rec-{}", ::getpid());
-  fs::create_directories(dir);
+  static const fs::path dir = fresh_directory("impact3d-rec");
   return dir;
 }
 

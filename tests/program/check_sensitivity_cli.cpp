@@ -98,7 +98,7 @@ TEST_CASE("bad options: one line, nothing on stdout") {
 }
 
 TEST_CASE("the plot option draws a tornado of each vehicle's delta-V per strategy") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-sens-{}", ::getpid());
+  const fs::path dir = fresh_directory("impact3d-sens");
   const Run r = run_program(IMPACT3D_CLI, {"sensitivity", IMPACT3D_EXAMPLES_DIR "/fig8_side_impact.json", "--plot", dir.string()});
   REQUIRE(r.status == 0);
   for (int k = 0; k < 4; ++k)

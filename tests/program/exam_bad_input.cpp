@@ -75,8 +75,7 @@ TEST_CASE("an endless or oversized file is refused after the size limit", "[bad-
 TEST_CASE("command-line usage errors: exit 2 and one line", "[bad-input]") {
   const std::string fig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
   // Run in a scratch directory, so that a plot that wrongly ran would leave its figures where we look.
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-usage-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-usage");
   // For each subcommand: an unknown option, a missing argument (positional or an option's value), and an
   // invalid value where the subcommand has options that take one.
   for (const auto& args : std::vector<std::vector<std::string>>{{"solve", fig8, "--digits", "0"},
@@ -122,8 +121,7 @@ TEST_CASE("bad input to every subcommand: exit 1, one error line, nothing on std
   const std::string missing = "/nonexistent/case.json";
   const std::string bad_line = "impact3d: error: " + bad + ": $.vehicles[1].mass: must be > 0 (got -2200)\n";
   const std::string missing_line = "impact3d: error: " + missing + ": cannot read the file (No such file or directory)\n";
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-bad-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-bad");
   struct Expect {
     std::vector<std::string> args;
     std::string err;  // the exact line, or empty when only its shape is pinned
@@ -180,8 +178,7 @@ TEST_CASE("a valid case exits 0 with output and nothing on stderr", "[bad-input]
 }
 
 TEST_CASE("verify with nothing to verify fails instead of passing", "[bad-input]") {
-  const fs::path empty = fs::temp_directory_path() / fmt::format("impact3d-empty-{}", ::getpid());
-  fs::create_directories(empty);
+  const fs::path empty = fresh_directory("impact3d-empty");
   // Nothing named: a usage error that says what to give.
   const Run bare = run_argv({"verify"});
   CHECK(bare.status == 2);
@@ -201,8 +198,7 @@ TEST_CASE("verify with nothing to verify fails instead of passing", "[bad-input]
 // (1, 1, 0), m' = 1/2), so Brach with mu_t = 2, mu_z = 0 makes the restitution row a1 + b1 mu_t = 0: that
 // strategy alone has no impulse, at every precision and in both engines.
 TEST_CASE("a strategy with no solution is named by its path", "[bad-input]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-singular-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-singular");
   std::ofstream(dir / "case.json") << R"({"vehicles": [
     {"mass": 1, "inertia": {"Ixx": 1, "Iyy": 1, "Izz": 1}, "velocity": [1, 0, 0], "impulse_center": [1, 1, 0]},
     {"mass": 1, "inertia": {"Ixx": 1, "Iyy": 1, "Izz": 1}, "orientation_deg": {"yaw": 180}, "velocity": [-1, 0, 0],

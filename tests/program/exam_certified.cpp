@@ -125,8 +125,7 @@ TEST_CASE("mu within 1e-20 of the GIR is undecided at 64 bits and decided correc
 }
 
 TEST_CASE("an exact rational tie is reported as a tie", "[certified]") {
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-certified-{}", ::getpid());
-  fs::create_directories(dir);
+  const fs::path dir = fresh_directory("impact3d-certified");
   const std::string path = (dir / "identity.json").string();
   std::ofstream(path) << kIdentityK;
   // The hand derivation, by exact arithmetic first.

@@ -55,8 +55,7 @@ TEST_CASE("the Figure 8 report opens in Chromium without console messages and sh
     std::puts("SKIPPED: Chromium is not installed (Debian: apt-get install chromium); the HTML report was not opened");
     std::exit(77);
   }
-  const fs::path dir = fs::temp_directory_path() / fmt::format("impact3d-report-html-{}", ::getpid());
-  fs::remove_all(dir);
+  const fs::path dir = fresh_directory("impact3d-report-html");
   fs::create_directories(dir / "profile");
   const std::string fig8 = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_side_impact.json";
   const Run made = run_argv({"report", fig8, "-o", (dir / "fig8.html").string()});

@@ -20,11 +20,12 @@
 
 namespace impact3d::test {
 
-// A directory of this process's own under the system's temporary one, emptied: a process of an earlier
-// run with the same pid may have left files there, and the tests assert what the program wrote.
+// A directory of this process's own under the system's temporary one, made empty: a process of an
+// earlier run with the same pid may have left files there, and the tests assert what the program wrote.
 inline std::filesystem::path fresh_directory(const std::string& name) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / fmt::format("{}-{}", name, ::getpid());
   std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
   return dir;
 }
 
