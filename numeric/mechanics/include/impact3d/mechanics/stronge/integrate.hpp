@@ -1,0 +1,280 @@
+// Stronge's impact followed through the normal impulse p, from m', K and V_ri (eq 9), to the end that
+// the restitution law sets. The contact slides (a Taylor series step, sliding_series.hpp, of order
+// ceil(-ln eps / 2) + 1 and the step that makes its next term eps, Jorba and Zou's rule) until sliding
+// stops; from then on the impulse rate is constant (sticking, or sliding out along an invariant
+// direction, tangential_map.hpp) and every event is a closed form. Events inside a step are the roots of
+// its polynomials, bisected to the last bit.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "impact3d/mechanics/stronge/history.hpp"
+#include "impact3d/mechanics/stronge/real_roots.hpp"
+#include "impact3d/mechanics/stronge/sliding_series.hpp"
+#include "impact3d/mechanics/stronge/tangential_map.hpp"
+
+namespace impact3d::stronge {
+
+// Limits on one integration (docs/limits.md): Taylor steps, and impulse over m' v0.
+inline constexpr int kMaxSteps = 4096;
+inline constexpr double kMaxImpulse = 1e6;
+
+template <typename Scalar>
+int taylor_order() {
+  return static_cast<int>(std::ceil(-std::log(to_double(std::numeric_limits<Scalar>::epsilon())) / 2)) + 1;
+}
+
+namespace detail {
+
+template <typename Scalar>
+struct Follow {
+  const Mat3<Scalar>& K;
+  Vec3<Scalar> U_i;
+  Scalar mu, e;
+  RestitutionLaw law;
+  bool record;
+  TangentialMap<Scalar> map = TangentialMap<Scalar>::of(K);
+  Scalar eps = std::numeric_limits<Scalar>::epsilon();
+  Scalar x{0}, a{0}, b{0}, W{0};  // the impulse so far over m' v0, and the normal work over m' v0^2
+  bool compressing = true, sliding = true;
+  Scalar f_t{0}, f_z{0};  // the tangential impulse rate once it is constant
+  Scalar x_c{0}, W_c{0};
+  std::optional<Scalar> c_prev, s_prev;  // the sliding direction at the last step's end
+  History<Scalar> h;
+
+  Vec3<Scalar> U() const { return U_i - K * Vec3<Scalar>(x, a, b); }
+
+  void event(EventKind kind, const Vec3<Scalar>& U_now) {
+    if (record) h.events.push_back({kind, x, U_now, W});
+  }
+  // The end condition's value: positive until the impact ends (after compression).
+  Scalar end_value(const Scalar& x_now, const Scalar& W_now, const Scalar& U_n) const {
+    switch (law) {
+      case RestitutionLaw::energetic: return W_now - (Scalar(1) - e * e) * W_c;
+      case RestitutionLaw::poisson: return (Scalar(1) + e) * x_c - x_now;
+      case RestitutionLaw::newton: return U_n + e * U_i(0);
+    }
+    return Scalar(0);
+  }
+  void end_compression(const Vec3<Scalar>& U_now) {
+    compressing = false;
+    x_c = x, W_c = W;
+    h.work_compression = W;
+    event(EventKind::compression_end, U_now);
+  }
+
+  // u has reached zero: stick if Coulomb's cone holds the ratio that keeps it there, else slide out
+  // along the fastest-growing invariant direction (the others named by their count).
+  bool from_rest(bool at_start) {
+    using std::atan2;
+    sliding = false;
+    const auto r = map.stick_ratio();
+    if (!r) return fail("the tangential block of K is singular: the contact cannot stick or slide out");
+    if ((*r)[0] * (*r)[0] + (*r)[1] * (*r)[1] <= mu * mu) {
+      f_t = (*r)[0], f_z = (*r)[1];
+      event(EventKind::stick, U());
+      return true;
+    }
+    const auto dirs = invariant_directions(map, mu);
+    std::optional<Direction<Scalar>> best;
+    int outward = 0;
+    for (const auto& d : dirs)
+      if (d.growth > Scalar(0)) {
+        ++outward;
+        if (!best || d.growth > best->growth) best = d;
+      }
+    h.diverging_directions = outward;
+    if (!best) return fail("sliding stopped, the contact cannot stick, and no direction lets it slide out");
+    f_t = mu * best->c, f_z = mu * best->s;
+    h.final_direction_deg = degrees(Scalar(atan2(best->s, best->c)));
+    event(at_start ? EventKind::slip : EventKind::reversal, U());
+    return true;
+  }
+
+  bool fail(const char* why) {
+    h.failure = why;
+    return false;
+  }
+
+  // The constant-rate phase to the end: closed forms.
+  bool constant_rate() {
+    using std::sqrt;
+    const Vec3<Scalar> g = -(K * Vec3<Scalar>(Scalar(1), f_t, f_z));  // dU/dx
+    if (!(g(0) < Scalar(0)))
+      return fail("the normal relative velocity does not decrease while the contact sticks or slides out (friction "
+                  "jams the contact)");
+    const Scalar s = -g(0);
+    auto advance = [&](const Scalar& d) {
+      const Scalar U_n = U()(0);
+      W += U_n * d - s * d * d / Scalar(2);
+      x += d, a += f_t * d, b += f_z * d;
+    };
+    if (compressing) {
+      advance(Scalar(std::max(Scalar(0), Scalar(U()(0) / s))));
+      end_compression(U());
+    }
+    const Scalar U_n = U()(0);
+    Scalar d(0);
+    switch (law) {
+      case RestitutionLaw::energetic: {
+        const Scalar left = W - (Scalar(1) - e * e) * W_c;  // the work still to release
+        if (left > Scalar(0)) d = Scalar(2) * left / (sqrt(U_n * U_n + Scalar(2) * s * left) - U_n);
+        break;
+      }
+      case RestitutionLaw::poisson: d = std::max(Scalar(0), Scalar((Scalar(1) + e) * x_c - x)); break;
+      case RestitutionLaw::newton: d = std::max(Scalar(0), Scalar((U_n + e * U_i(0)) / s)); break;
+    }
+    advance(d);
+    return true;
+  }
+
+  // The first root in (0, H] of the polynomial c whose value at 0 is positive, if it has one there.
+  std::optional<Scalar> first_root(const std::vector<Scalar>& c, const Scalar& H) const {
+    constexpr int kSamples = 4;
+    Scalar lo(0);
+    for (int i = 1; i <= kSamples; ++i) {
+      const Scalar hi = H * Scalar(i) / Scalar(kSamples);
+      if (!(polynomial_at(c, hi) > Scalar(0))) return bisect_root(c, lo, hi);
+      lo = hi;
+    }
+    return std::nullopt;
+  }
+
+  void turn_to(const Scalar& c, const Scalar& s) {
+    using std::abs;
+    using std::atan2;
+    if (c_prev) h.swerve_deg += degrees(Scalar(abs(atan2(*c_prev * s - *s_prev * c, *c_prev * c + *s_prev * s))));
+    c_prev = c, s_prev = s;
+  }
+
+  // One Taylor step of the sliding phase; false when the phase is over (sliding stopped or the impact
+  // ended) or failed.
+  bool slide_step(int order) {
+    using std::abs;
+    using std::sqrt;
+    const SlidingSeries<Scalar> ser = sliding_series(K, U_i, mu, x, a, b, W, order);
+    const std::size_t n = ser.a.size();
+    // The step whose last two terms are eps (Jorba and Zou), at most 1 + x so that a series that ends
+    // (no swerve) still steps through the impact's scale.
+    double step = to_double(Scalar(1) + x);
+    for (std::size_t j = n - 2; j < n; ++j) {
+      const double c = std::max(to_double(abs(ser.a[j])), to_double(abs(ser.b[j])));
+      if (c > 0) step = std::min(step, std::exp((std::log(to_double(eps)) - std::log(c)) / static_cast<double>(j)));
+    }
+    Scalar H(step);
+    if (!(H > eps * (Scalar(1) + x))) return fail("the sliding phase's step fell below the precision"), false;
+    // The events the step may hold, each a polynomial positive now.
+    std::vector<Scalar> radial(n);  // u(h) . u(0)
+    for (std::size_t j = 0; j < n; ++j) radial[j] = ser.u_t[j] * ser.u_t[0] + ser.u_z[j] * ser.u_z[0];
+    std::vector<Scalar> ending = ser.U_n;
+    if (!compressing) {
+      if (law == RestitutionLaw::energetic) {
+        ending = ser.W;
+        ending[0] -= (Scalar(1) - e * e) * W_c;
+      } else if (law == RestitutionLaw::poisson) {
+        ending.assign(2, Scalar(0));
+        ending[0] = (Scalar(1) + e) * x_c - x, ending[1] = Scalar(-1);
+      } else {
+        ending[0] += e * U_i(0);
+      }
+    }
+    enum { none, stop, phase } what = none;
+    const auto ends = first_root(ending, H);
+    if (ends) H = *ends, what = phase;
+    const auto stops = first_root(radial, H);
+    Scalar rho_at_stop(0);
+    if (stops) {
+      const Scalar ut = polynomial_at(ser.u_t, *stops), uz = polynomial_at(ser.u_z, *stops);
+      rho_at_stop = sqrt(ut * ut + uz * uz);
+      // A crossing far from u = 0 is the direction turning past a right angle within the step: no event.
+      if (rho_at_stop <= sqrt(eps)) H = *stops, what = stop;
+    }
+    // The truncation of this step: its last term at H.
+    Scalar last(0);
+    for (const auto* v : {&ser.a, &ser.b}) last = std::max(last, Scalar(abs((*v)[n - 1])));
+    Scalar Hn(1);
+    for (std::size_t j = 0; j + 1 < n; ++j) Hn *= H;
+    h.error_bound += last * Hn + eps;
+    ++h.steps;
+    x += H, a = polynomial_at(ser.a, H), b = polynomial_at(ser.b, H), W = polynomial_at(ser.W, H);
+    if (what == stop) {
+      // The direction it arrived along: minus the velocity's derivative there.
+      std::vector<Scalar> dt(n - 1), dz(n - 1);
+      for (std::size_t j = 1; j < n; ++j) dt[j - 1] = ser.u_t[j] * Scalar(static_cast<long long>(j)), dz[j - 1] = ser.u_z[j] * Scalar(static_cast<long long>(j));
+      const Scalar vt = -polynomial_at(dt, H), vz = -polynomial_at(dz, H);
+      const Scalar len = sqrt(vt * vt + vz * vz);
+      if (len > Scalar(0)) turn_to(Scalar(vt / len), Scalar(vz / len));
+      h.error_bound += rho_at_stop;
+      c_prev.reset(), s_prev.reset();
+      return false;
+    }
+    const Vec3<Scalar> U_now = U();
+    const Scalar rho = sqrt(U_now(1) * U_now(1) + U_now(2) * U_now(2));
+    turn_to(Scalar(U_now(1) / rho), Scalar(U_now(2) / rho));
+    if (what == phase) {
+      if (compressing) {
+        end_compression(U_now);
+        if (!(end_value(x, W, U_now(0)) > Scalar(0))) return finish_sliding(U_now), false;
+        return true;
+      }
+      return finish_sliding(U_now), false;
+    }
+    return true;
+  }
+
+  void finish_sliding(const Vec3<Scalar>& U_now) {
+    using std::atan2;
+    using std::sqrt;
+    const Scalar rho = sqrt(U_now(1) * U_now(1) + U_now(2) * U_now(2));
+    h.final_direction_deg = degrees(Scalar(atan2(U_now(2) / rho, U_now(1) / rho)));
+    ended = true;
+  }
+  bool ended = false;
+
+  History<Scalar> run() {
+    using std::sqrt;
+    const int order = taylor_order<Scalar>();
+    const Scalar rho_i = sqrt(U_i(1) * U_i(1) + U_i(2) * U_i(2));
+    if (rho_i <= Scalar(1024) * eps) {
+      h.error_bound += rho_i;
+      if (!from_rest(true)) return h;
+    } else {
+      event(EventKind::slip, U());
+      while (slide_step(order)) {
+        if (h.steps >= kMaxSteps) return fail("the sliding phase took more than 4096 steps"), h;
+        if (x > Scalar(kMaxImpulse)) return fail("the impact does not end within 10^6 m' |V_ri| of normal impulse"), h;
+      }
+      if (h.failure) return h;
+      if (!ended && !from_rest(false)) return h;
+    }
+    if (!ended && !constant_rate()) return h;
+    const Vec3<Scalar> U_f = U();
+    h.work_restitution = W_c - W;
+    event(EventKind::end, U_f);
+    return h;
+  }
+};
+
+}  // namespace detail
+
+// The impact followed from m', K, V_ri (contact axes, V_rn > 0) at friction mu and restitution e; the
+// events are recorded when `record` (a report), else only the end. A failure leaves the impulse unset.
+template <typename Scalar>
+History<Scalar> integrate(const Mat3<Scalar>& K, const Scalar& m_prime, const Vec3<Scalar>& V_ri, const Scalar& mu,
+                          const Scalar& e, RestitutionLaw law, bool record = true) {
+  const Scalar v0 = V_ri.norm();
+  detail::Follow<Scalar> f{K, Vec3<Scalar>(V_ri / v0), mu, e, law, record};
+  History<Scalar> h = f.run();
+  if (h.failure) return h;
+  const Scalar p0 = m_prime * v0;
+  h.P_C = Vec3<Scalar>(f.x, f.a, f.b) * p0;
+  h.V_rf = f.U() * v0;
+  for (auto& ev : h.events) ev.p *= p0, ev.V_C *= v0, ev.normal_work *= p0 * v0;
+  h.work_compression *= p0 * v0, h.work_restitution *= p0 * v0;
+  return h;
+}
+
+}  // namespace impact3d::stronge

@@ -1,0 +1,70 @@
+// Every real root of a polynomial of low degree, at the scalar's precision: the roots of its derivative
+// split the line into intervals on which it is monotone, and each interval whose ends differ in sign
+// holds one root, found by bisection. Nothing is missed but roots of even multiplicity that the
+// arithmetic cannot tell from a near miss (a critical value within rounding of zero counts as a root).
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace impact3d::stronge {
+
+// c[0] + c[1] x + ... at x, by Horner.
+template <typename Scalar>
+Scalar polynomial_at(const std::vector<Scalar>& c, const Scalar& x) {
+  Scalar y(0);
+  for (std::size_t i = c.size(); i-- > 0;) y = y * x + c[i];
+  return y;
+}
+
+// The root of c in [lo, hi], where c(lo) and c(hi) differ in sign, to the last bit the bisection can
+// split (at most `kBisections` halvings: 128 more than the widest scalar's bits).
+template <typename Scalar>
+Scalar bisect_root(const std::vector<Scalar>& c, Scalar lo, Scalar hi) {
+  constexpr int kBisections = 128 + 400;
+  const bool lo_negative = polynomial_at(c, lo) < Scalar(0);
+  for (int i = 0; i < kBisections; ++i) {
+    const Scalar mid = (lo + hi) / Scalar(2);
+    if (!(mid > lo && mid < hi)) break;
+    const Scalar y = polynomial_at(c, mid);
+    if (y == Scalar(0)) return mid;
+    if ((y < Scalar(0)) == lo_negative) lo = mid;
+    else hi = mid;
+  }
+  return (lo + hi) / Scalar(2);
+}
+
+// The real roots of c (c.back() != 0), in increasing order; `zero` is the size of a critical value
+// counted as a root (the rounding of the polynomial's values).
+template <typename Scalar>
+std::vector<Scalar> real_roots(std::vector<Scalar> c, const Scalar& zero) {
+  using std::abs;
+  while (c.size() > 1 && c.back() == Scalar(0)) c.pop_back();
+  const std::size_t degree = c.size() - 1;
+  if (degree == 0) return {};
+  if (degree == 1) return {Scalar(-c[0] / c[1])};
+  std::vector<Scalar> d(degree);
+  for (std::size_t i = 1; i <= degree; ++i) d[i - 1] = c[i] * Scalar(static_cast<long long>(i));
+  // Cauchy's bound: every root lies within 1 + max |c_i / c_n|.
+  Scalar bound(0);
+  for (std::size_t i = 0; i < degree; ++i) bound = std::max(bound, Scalar(abs(c[i] / c[degree])));
+  bound = bound + Scalar(1);
+  std::vector<Scalar> ends{Scalar(-bound)};
+  for (const Scalar& x : real_roots(d, zero))
+    if (x > -bound && x < bound) ends.push_back(x);
+  ends.push_back(bound);
+  std::vector<Scalar> roots;
+  for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+    const Scalar a = polynomial_at(c, ends[i]), b = polynomial_at(c, ends[i + 1]);
+    if (i > 0 && abs(a) <= zero) {
+      if (roots.empty() || roots.back() != ends[i]) roots.push_back(ends[i]);
+    } else if ((a < Scalar(0)) != (b < Scalar(0)) && abs(b) > zero) {
+      roots.push_back(bisect_root(c, ends[i], ends[i + 1]));
+    }
+  }
+  return roots;
+}
+
+}  // namespace impact3d::stronge

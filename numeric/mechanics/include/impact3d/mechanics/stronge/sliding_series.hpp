@@ -1,0 +1,65 @@
+// The Taylor series of a sliding contact about one normal impulse, to any order, by the recurrences of
+// automatic differentiation (Jorba and Zou, Experiment. Math. 14 (2005) 99): the integration's one step.
+//
+// Dimensionless: x = p / (m' v0), P = (x, a, b) the impulse over m' v0, U = V / v0 with v0 = |V_ri|, so
+// that eq 9 reads U = U_i - K P. Sliding (history.hpp, tangential_map.hpp):
+//   da/dx = mu u_t / |u|,   db/dx = mu u_z / |u|,   dW/dx = U_n   (W the normal work over m' v0^2),
+// u = (U_t, U_z) linear in (x, a, b). With h = x - x0 each quantity is a polynomial sum_j c_j h^j; the
+// coefficients of |u|^2, |u| and u / |u| follow from those of u by Cauchy products.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "impact3d/scalar/types.hpp"
+
+namespace impact3d::stronge {
+
+template <typename Scalar>
+struct SlidingSeries {
+  // Coefficients 0..order of each quantity in h.
+  std::vector<Scalar> a, b, W, U_n, u_t, u_z;
+};
+
+// The series about (x0, a0, b0, W0) to `order`; u(x0) must not be zero.
+template <typename Scalar>
+SlidingSeries<Scalar> sliding_series(const Mat3<Scalar>& K, const Vec3<Scalar>& U_i, const Scalar& mu, const Scalar& x0,
+                                     const Scalar& a0, const Scalar& b0, const Scalar& W0, int order) {
+  using std::sqrt;
+  const std::size_t n = static_cast<std::size_t>(order) + 1;
+  SlidingSeries<Scalar> s;
+  for (auto* v : {&s.a, &s.b, &s.W, &s.U_n, &s.u_t, &s.u_z}) v->assign(n, Scalar(0));
+  std::vector<Scalar> sq(n, Scalar(0)), r(n, Scalar(0)), q_t(n, Scalar(0)), q_z(n, Scalar(0));
+  s.a[0] = a0, s.b[0] = b0, s.W[0] = W0;
+  for (std::size_t j = 0; j < n; ++j) {
+    // U = U_i - K (x, a, b): its coefficient j from a_j, b_j and x's (x0, then 1, then 0).
+    for (int row = 0; row < 3; ++row) {
+      Scalar c = -(K(row, 1) * s.a[j] + K(row, 2) * s.b[j]);
+      if (j == 0) c += U_i(row) - K(row, 0) * x0;
+      if (j == 1) c -= K(row, 0);
+      (row == 0 ? s.U_n : row == 1 ? s.u_t : s.u_z)[j] = c;
+    }
+    Scalar acc(0);
+    for (std::size_t i = 0; i <= j; ++i) acc += s.u_t[i] * s.u_t[j - i] + s.u_z[i] * s.u_z[j - i];
+    sq[j] = acc;
+    if (j == 0) {
+      r[0] = sqrt(sq[0]);
+    } else {
+      Scalar cross(0);
+      for (std::size_t i = 1; i < j; ++i) cross += r[i] * r[j - i];
+      r[j] = (sq[j] - cross) / (Scalar(2) * r[0]);
+    }
+    Scalar qt = s.u_t[j], qz = s.u_z[j];
+    for (std::size_t i = 1; i <= j; ++i) qt -= r[i] * q_t[j - i], qz -= r[i] * q_z[j - i];
+    q_t[j] = qt / r[0], q_z[j] = qz / r[0];
+    if (j + 1 < n) {
+      const Scalar next(static_cast<long long>(j + 1));
+      s.a[j + 1] = mu * q_t[j] / next;
+      s.b[j + 1] = mu * q_z[j] / next;
+      s.W[j + 1] = s.U_n[j] / next;
+    }
+  }
+  return s;
+}
+
+}  // namespace impact3d::stronge

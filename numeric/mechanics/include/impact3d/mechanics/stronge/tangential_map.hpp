@@ -1,0 +1,90 @@
+// The contact-plane part of eq 9 while the contact slides or sticks, in Stronge's variables: with the
+// normal impulse p as the independent variable and the tangential impulse rate f = dP_tz/dp,
+//   m' du/dp = -(k + A f),   u = (V_t, V_z),
+// k = (K_tn, K_zn) the normal column's tangential part and A = [[K_tt, K_tz], [K_zt, K_zz]] the
+// tangential block. Sliding: f = mu u/|u|; sticking: f = r with A r = -k, the ratio that keeps u = 0;
+// resuming from rest: f = mu d along a direction d that the map carries onto itself, outward.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "impact3d/mechanics/stronge/real_roots.hpp"
+#include "impact3d/scalar/types.hpp"
+
+namespace impact3d::stronge {
+
+template <typename Scalar>
+struct TangentialMap {
+  Scalar k_t, k_z;          // K_tn, K_zn
+  Scalar A_tt, A_tz, A_zz;  // the tangential block (K symmetric)
+
+  static TangentialMap of(const Mat3<Scalar>& K) {
+    // K is symmetric (problem.hpp); its mean off-diagonal keeps a rounded K's map symmetric.
+    return {K(1, 0), K(2, 0), K(1, 1), Scalar((K(1, 2) + K(2, 1)) / Scalar(2)), K(2, 2)};
+  }
+
+  // The tangential impulse ratio that keeps u = 0 (A r = -k); empty when A is singular.
+  std::optional<std::array<Scalar, 2>> stick_ratio() const {
+    const Scalar det = A_tt * A_zz - A_tz * A_tz;
+    if (!(det > Scalar(0))) return std::nullopt;
+    return std::array<Scalar, 2>{Scalar(-(A_zz * k_t - A_tz * k_z) / det), Scalar(-(A_tt * k_z - A_tz * k_t) / det)};
+  }
+
+  // -(k + mu A d) . d: how fast |u| grows along the direction d when sliding along it.
+  Scalar growth(const Scalar& mu, const Scalar& c, const Scalar& s) const {
+    return -((k_t + mu * (A_tt * c + A_tz * s)) * c + (k_z + mu * (A_tz * c + A_zz * s)) * s);
+  }
+  // (k + mu A d) x d: zero where the map carries d onto itself (an invariant direction).
+  Scalar turning(const Scalar& mu, const Scalar& c, const Scalar& s) const {
+    return (k_t + mu * (A_tt * c + A_tz * s)) * s - (k_z + mu * (A_tz * c + A_zz * s)) * c;
+  }
+};
+
+template <typename Scalar>
+struct Direction {
+  Scalar c, s;      // unit vector (t, z)
+  Scalar growth;    // d|u|/dp m' along it: > 0 outward
+};
+
+// Every invariant direction of the map at friction mu: the unit vectors d with (k + mu A d) x d = 0.
+// With d at angle theta the condition is a trigonometric polynomial of degree 2,
+//   k_t s - k_z c + mu ((A_tt - A_zz) c s + A_tz (s^2 - c^2)) = 0,
+// which the half-angle t = tan(phi / 2), theta = theta_0 + phi, turns into a quartic; theta_0 is the
+// direction of a fixed rational set whose opposite is farthest from a root, so that none is lost at
+// t = infinity. Empty when the condition vanishes identically (k = 0 and A isotropic: every direction is
+// invariant and none outward).
+template <typename Scalar>
+std::vector<Direction<Scalar>> invariant_directions(const TangentialMap<Scalar>& m, const Scalar& mu) {
+  using std::abs;
+  const std::array<std::array<int, 2>, 8> rational{{{5, 0}, {0, 5}, {-5, 0}, {0, -5}, {3, 4}, {-4, 3}, {-3, -4}, {4, -3}}};
+  Scalar best(-1), c0(1), s0(0);
+  for (const auto& v : rational) {
+    const Scalar c = ratio<Scalar>(v[0], 5), s = ratio<Scalar>(v[1], 5);
+    const Scalar at_opposite = abs(m.turning(mu, Scalar(-c), Scalar(-s)));
+    if (at_opposite > best) best = at_opposite, c0 = c, s0 = s;
+  }
+  const Scalar scale = abs(m.k_t) + abs(m.k_z) + mu * (abs(m.A_tt) + abs(m.A_zz) + abs(m.A_tz));
+  const Scalar zero = Scalar(64) * std::numeric_limits<Scalar>::epsilon() * scale;
+  if (!(best > zero)) return {};
+  // The condition as a1 sin th + b1 cos th + a2 sin 2th + b2 cos 2th, rotated to phi = th - th0.
+  const Scalar a1 = m.k_t, b1 = -m.k_z, a2 = mu * (m.A_tt - m.A_zz) / Scalar(2), b2 = -mu * m.A_tz;
+  const Scalar c2 = c0 * c0 - s0 * s0, s2 = Scalar(2) * s0 * c0;
+  const Scalar a1r = a1 * c0 - b1 * s0, b1r = a1 * s0 + b1 * c0;
+  const Scalar a2r = a2 * c2 - b2 * s2, b2r = a2 * s2 + b2 * c2;
+  // (1 + t^2)^2 times the condition, with sin phi = 2t / (1 + t^2), cos phi = (1 - t^2) / (1 + t^2).
+  const std::vector<Scalar> quartic{Scalar(b1r + b2r), Scalar(Scalar(2) * a1r + Scalar(4) * a2r), Scalar(Scalar(-6) * b2r),
+                                    Scalar(Scalar(2) * a1r - Scalar(4) * a2r), Scalar(b2r - b1r)};
+  std::vector<Direction<Scalar>> out;
+  for (const Scalar& t : real_roots(quartic, zero)) {
+    const Scalar q = Scalar(1) + t * t;
+    const Scalar cp = (Scalar(1) - t * t) / q, sp = Scalar(2) * t / q;
+    const Scalar c = c0 * cp - s0 * sp, s = s0 * cp + c0 * sp;
+    out.push_back({c, s, m.growth(mu, c, s)});
+  }
+  return out;
+}
+
+}  // namespace impact3d::stronge
