@@ -1,5 +1,5 @@
 // Conservation laws every impulse law must obey, checked from the post-impact states of seeded random
-// collisions under every strategy.
+// collisions under every strategy, Stronge's integration among them.
 #include <catch2/catch.hpp>
 
 #include "support.hpp"
@@ -14,7 +14,7 @@ TEST_CASE("linear momentum of the pair is conserved by every strategy", "[conser
   int checked = 0;
   for (int n = 0; n < 200; ++n) {
     const Scene<double> s = random_scene(g);
-    const Analysis<double> a = analyze(s, every_strategy(0.4));
+    const Analysis<double> a = analyze(s, every_floating_strategy(0.4));
     const V3 before = s.body[0].mass * s.body[0].v_W + s.body[1].mass * s.body[1].v_W;
     const double scale = s.body[0].mass * s.body[0].v_W.norm() + s.body[1].mass * s.body[1].v_W.norm();
     for (const auto& sol : a.solutions) {
@@ -32,7 +32,7 @@ TEST_CASE("each vehicle's angular momentum about its impulse centre is conserved
   int checked = 0;
   for (int n = 0; n < 200; ++n) {
     const Scene<double> s = random_scene(g);
-    const Analysis<double> a = analyze(s, every_strategy(0.7));
+    const Analysis<double> a = analyze(s, every_floating_strategy(0.7));
     for (const auto& sol : a.solutions)
       for (int i = 0; i < 2; ++i) {
         const auto& b = s.body[i];
@@ -54,7 +54,7 @@ TEST_CASE("the energy change equals -P . (V_ri + V_rf) / 2", "[conservation]") {
   int checked = 0;
   for (int n = 0; n < 200; ++n) {
     const Scene<double> s = random_scene(g);
-    const Analysis<double> a = analyze(s, every_strategy(0.3));
+    const Analysis<double> a = analyze(s, every_floating_strategy(0.3));
     for (const auto& sol : a.solutions) {
       const double work = -sol.impulse.P_C.dot(sol.V_ri + sol.V_rf) / 2;
       // Both sides are differences of energies of size energy_before (and |P| |V|), a few eps each,

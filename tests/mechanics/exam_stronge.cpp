@@ -220,4 +220,40 @@ TEST_CASE("isotropic contact: no swerve, a straight slide to rest, the closed fo
   CHECK(checked == 9);
 }
 
+// Newton's law gains energy when sliding stops during compression (Stronge, Impact Mechanics, sec. 5.3;
+// Kane and Levinson's example): the tangential coupling K_nt < 0 speeds the normal approach's reversal
+// once the friction no longer opposes it, and V_nf = -e V_ni is then reached only after more
+// restitution impulse than the compression's. The planar hand solution above gives the end state; its
+// energy (m'/2) V^T K^-1 V (m' dV = -K dP, so the change is the contact impulse's work) is by hand.
+// The energetic law on the same impact loses energy, as it always must.
+TEST_CASE("Newton's law gains energy where sliding stops during compression; the energetic law does not",
+          "[stronge]") {
+  M3 K;
+  K << 0.56, -0.64, 0, -0.64, 2.38, 0, 0, 0, 1.8;
+  const double m = 1, mu = 0.8, e = 0.96;
+  const V3 V_i(1, -1.4, 0);
+  auto energy = [&](const V3& V) {
+    // The planar block's inverse by hand: [K_tt, -K_nt; -K_nt, K_nn] / det.
+    const double det = K(0, 0) * K(1, 1) - K(0, 1) * K(0, 1);
+    return m * (K(1, 1) * V.x() * V.x() - 2 * K(0, 1) * V.x() * V.y() + K(0, 0) * V.y() * V.y()) / det / 2;
+  };
+  const auto hand_newton = planar_by_hand<double>(K, m, V_i, mu, e, RestitutionLaw::newton);
+  REQUIRE(hand_newton.sticks);
+  const V3 V_f = V_i - K * V3(hand_newton.p_f, hand_newton.P_t, 0) / m;
+  CHECK(std::fabs(V_f.x() + e * V_i.x()) <= 16 * eps);
+  // Lost: negative, by a fifth of the approach's energy, far beyond any rounding.
+  CHECK(energy(V_i) - energy(V_f) < -0.1 * energy(V_i));
+
+  const auto got = stronge::integrate(K, m, V_i, mu, e, RestitutionLaw::newton);
+  REQUIRE(got.failure == nullptr);
+  REQUIRE(got.events.size() == 4);
+  CHECK(got.events[1].kind == stronge::EventKind::stick);  // before compression ends
+  CHECK(got.events[2].kind == stronge::EventKind::compression_end);
+  CHECK(std::fabs(energy(got.V_rf) - energy(V_f)) <= 64 * eps * energy(V_i));
+
+  const auto energetic = stronge::integrate(K, m, V_i, mu, e, RestitutionLaw::energetic);
+  REQUIRE(energetic.failure == nullptr);
+  CHECK(energy(V_i) - energy(energetic.V_rf) > 0);
+}
+
 }  // namespace exam_stronge

@@ -159,7 +159,7 @@ TEST_CASE("a command-line strategy that is not UTF-8 or holds control characters
   const Run control = run_argv({"solve", fig8, "--strategy", "wach\n\x1b[31m:mu=0.4"});
   CHECK(control.status == 1);
   CHECK(control.err == "impact3d: error: " + fig8 +
-                           ": --strategy[0].name: unknown strategy \"wach\\n\\x1B[31m\" (expected pc-crash, wach or brach)\n");
+                           ": --strategy[0].name: unknown strategy \"wach\\n\\x1B[31m\" (expected pc-crash, wach, brach or stronge)\n");
 }
 
 TEST_CASE("a bad command-line strategy names the option", "[bad-input]") {

@@ -92,6 +92,14 @@ inline std::vector<Strategy<double>> every_strategy(double mu) {
           Brach<double>{0.2, std::nullopt}, Brach<double>{std::nullopt, std::nullopt}};
 }
 
+// Every strategy of every_strategy and Stronge's three laws, which floating precisions alone solve.
+inline std::vector<Strategy<double>> every_floating_strategy(double mu) {
+  std::vector<Strategy<double>> out = every_strategy(mu);
+  for (const auto law : {stronge::RestitutionLaw::energetic, stronge::RestitutionLaw::poisson, stronge::RestitutionLaw::newton})
+    out.push_back(Stronge<double>{mu, law});
+  return out;
+}
+
 // Scale of the velocities that enter a post-impact relative velocity (rounding.hpp).
 using rounding::velocity_scale;
 

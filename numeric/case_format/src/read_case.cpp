@@ -12,6 +12,7 @@
 #include <cstring>
 #include <initializer_list>
 #include <optional>
+#include <span>
 
 #include <fmt/format.h>
 
@@ -353,6 +354,14 @@ class Reader {
     return number(v, here);
   }
 
+  // "\"cir\" or \"gir\"", "\"energetic\", \"poisson\" or \"newton\"".
+  static std::string one_of(std::span<const std::string_view> choices) {
+    std::string s;
+    for (std::size_t i = 0; i < choices.size(); ++i)
+      s += fmt::format("{}\"{}\"", i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ", choices[i]);
+    return s;
+  }
+
   StrategySpec strategy(const JsonValue& v, const Where& at) const {
     if (!v.is(Type::object)) fail(at, fmt::format("expected an object, got {}", type_name(v)));
     const std::string name = string(required(v, at, "name"), Where(at, "name"));
@@ -374,8 +383,8 @@ class Reader {
         case ParameterType::choice: {
           std::string value(p.choices[0]);
           if (auto* given = optional(v, key)) value = string(*given, here);
-          if (value != p.choices[0] && value != p.choices[1])
-            fail(here, fmt::format("expected \"{}\" or \"{}\", got {}", p.choices[0], p.choices[1], case_format::quoted(value)));
+          if (std::find(p.choices.begin(), p.choices.end(), value) == p.choices.end())
+            fail(here, fmt::format("expected {}, got {}", one_of(p.choices), case_format::quoted(value)));
           s.choices[key] = value;
           break;
         }

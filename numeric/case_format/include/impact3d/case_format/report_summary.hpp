@@ -45,6 +45,27 @@ struct ReportCells {
   }
 };
 
+// An integrated impulse's course (stronge): its events with the normal impulse, V_n and the sliding
+// speed there, the swerve and the normal work.
+template <typename Scalar, typename Unit>
+void history_rows(SummaryRows& t, const stronge::History<Scalar>& h, const Present<Scalar>& p, const Unit& U) {
+  using std::sqrt;
+  const auto& f = p.f;
+  t.row("events: p" + U("impulse") + ", V_n, sliding" + U("velocity"), {});
+  for (const auto& e : h.events)
+    t.row("  " + std::string(stronge::event_name(e.kind)),
+          {p.num(e.p, f.impulse), p.num(e.V_C.x(), f.velocity),
+           p.num(Scalar(sqrt(e.V_C.y() * e.V_C.y() + e.V_C.z() * e.V_C.z())), f.velocity)});
+  t.row("swerve during the impact [deg]", {p.num(h.swerve_deg)});
+  t.row("sliding direction at the end [deg]", {h.final_direction_deg ? p.num(*h.final_direction_deg) : std::string("- (sticks)")});
+  if (h.diverging_directions > 1)
+    t.row("directions sliding could resume along", {fmt::format("{}, the fastest-growing taken", h.diverging_directions)});
+  t.row("normal work: compression, restitution" + U("energy"),
+        {p.num(h.work_compression, f.energy), p.num(h.work_restitution, f.energy)});
+  t.row("integration: steps, error bound (relative)",
+        {std::to_string(h.steps), case_format::scalar_to_text(h.error_bound, 2)});
+}
+
 // The summary of one strategy: what a reconstruction is compared against, per vehicle and for the pair;
 // its warnings are the solution's own.
 template <typename Scalar>
@@ -81,6 +102,7 @@ std::vector<SummaryRow> summary_rows(const CaseSpec& c, const Solution<Scalar>& 
          s.swerve_speed ? cell.vel(s, *s.swerve_speed) : std::string("-")});
   t.row("swerve off the sliding line [deg]", {cell.opt(s.swerve_deg)});
   t.row("sliding reversed", {s.reversed ? (*s.reversed ? "yes" : "no") : "-"});
+  if (imp.history) history_rows(t, *imp.history, p, U);
   t.row("energy before, after, lost" + U("energy"),
         {p.num(s.energy_before, f.energy), p.num(s.energy_after, f.energy), p.num(s.energy_loss, f.energy)});
   const auto& m = s.momentum;

@@ -36,6 +36,35 @@ void write_matrix(JsonWriter& w, const Mat3<Scalar>& m, const Present<Scalar>& p
   w.end_array();
 }
 
+// An integrated impulse's course (stronge): the contract's `events` and `swerve_deg`, and this
+// program's `final_direction_deg`, `normal_work` and `integration` (docs/case-format.md).
+template <typename Scalar>
+void write_history(JsonWriter& w, const stronge::History<Scalar>& h, const Present<Scalar>& p) {
+  const auto& f = p.f;
+  w.key("events").begin_array();
+  for (const auto& e : h.events) {
+    w.begin_object();
+    w.key("kind").string(stronge::event_name(e.kind));
+    p.put(w.key("p"), e.p, f.impulse);
+    p.put_vec(w.key("relative_velocity"), e.V_C, f.velocity);
+    p.put(w.key("normal_work"), e.normal_work, f.energy);
+    w.end_object();
+  }
+  w.end_array();
+  p.put(w.key("swerve_deg"), h.swerve_deg);
+  if (h.final_direction_deg) p.put(w.key("final_direction_deg"), *h.final_direction_deg);
+  else w.key("final_direction_deg").null();
+  w.key("normal_work").begin_object();
+  p.put(w.key("compression"), h.work_compression, f.energy);
+  p.put(w.key("restitution"), h.work_restitution, f.energy);
+  w.end_object();
+  w.key("integration").begin_object();
+  w.key("steps").number([&](auto& out) { out += std::to_string(h.steps); });
+  w.key("error_bound").number([&](auto& out) { append_scalar(out, h.error_bound, 3); });
+  w.key("diverging_directions").number([&](auto& out) { out += std::to_string(h.diverging_directions); });
+  w.end_object();
+}
+
 // `snap`: print post-impact relative velocities inside the computation's rounding bound as 0 (the
 // reference suite does, so that no digit of rounding noise is printed as significant).
 // `split_rule`: how the case splits the energy loss for EES ("mass", "share", "stiffness").
@@ -88,6 +117,7 @@ void write_solution(JsonWriter& w, const StrategySpec& spec, const VehicleSpec* 
   if (s.sliding_along) vel(w.key("along"), *s.sliding_along); else w.key("along").null();
   if (s.reversed) w.key("reversed").boolean(*s.reversed); else w.key("reversed").null();
   w.end_object();
+  if (imp.history) write_history(w, *imp.history, p);
   w.key("impulse_space").begin_object();
   p.put(w.key("restitution_effective"), s.restitution_effective);
   w.key("t_sliding").string(axis_change_name(s.t_change));

@@ -34,7 +34,7 @@ bool case_finite(const Analysis<Scalar>& a) {
 template <typename E, typename Scalar>
 ImpulseSolution<Scalar> solve_impulse(const Problem<Scalar>& p, const Strategy<Scalar>& st) {
   ImpulseSolution<Scalar> out;
-  if (const Singular f = solve_strategy<E>(p, st, out)) throw E::singular(f.what);
+  if (const Singular f = solve_strategy<E>(p, st, out)) throw f.own_words ? SolveError(f.what) : E::singular(f.what);
   return out;
 }
 

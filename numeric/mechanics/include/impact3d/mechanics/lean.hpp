@@ -98,9 +98,11 @@ LeanSolution<Scalar> solve_lean_with(const Scene<Scalar>& s, const Strategy<Scal
   if (!finite) w |= warning_bit(WarningCode::not_finite);
   if constexpr (!is_exact_v<Scalar>) {
     // Decided on the bound when it is at most half the trusted fraction, else on the settled value.
-    if (!(rounding_bound_of(p.amplification_bound, p.quotient) <= Scalar(rounding::kTrustedFraction / 2))) {
+    const Scalar integration = out.impulse.integration_error ? *out.impulse.integration_error : Scalar(0);
+    if (!(Scalar(rounding_bound_of(p.amplification_bound, p.quotient) + integration) <=
+          Scalar(rounding::kTrustedFraction / 2))) {
       p.settle();
-      if (!trusted(rounding_bound_of(p.amplification, p.quotient)))
+      if (!trusted(Scalar(rounding_bound_of(p.amplification, p.quotient) + integration)))
         w |= warning_bit(WarningCode::rounding);
     }
   }
@@ -123,6 +125,7 @@ LeanSolution<To> convert_solution(const LeanSolution<From>& in, Want want, F&& f
   b.gir = opt(a.gir), b.cir = opt(a.cir), b.mu_t_critical = opt(a.mu_t_critical), b.mu_z_critical = opt(a.mu_z_critical);
   if (a.plane) b.plane = PlaneAxes<To>{f(a.plane->c), f(a.plane->s)};
   b.plane_angle_deg = opt(a.plane_angle_deg);
+  b.integration_error = opt(a.integration_error);
   b.codes = a.codes, b.for_report = a.for_report;
   if (want == Want::impulse) return out;
   out.P_W = convert_each<To>(in.P_W, f);

@@ -88,6 +88,9 @@ void flag_precision(Solution<Scalar>& s, const Scalar& amplification, const Scal
                             "it cannot be trusted"});
     const Scalar quotient = rounding::quotient_factor(s.V_ri);
     s.rounding_bound = rounding_bound_of(amplification, quotient);
+    // An integrated impulse (stronge) adds its integration's error to the rounding.
+    const Scalar integration = s.impulse.integration_error ? *s.impulse.integration_error : Scalar(0);
+    s.rounding_bound += integration;
     const double a = to_double(Scalar(amplification * quotient));
     const double bound = to_double(s.rounding_bound);
     if (trusted(s.rounding_bound)) return;
@@ -98,7 +101,10 @@ void flag_precision(Solution<Scalar>& s, const Scalar& amplification, const Scal
          << " eps kappa(K) cond(J) (|v_IC1|+|v_IC2|)/V_rn (1+|V_cp/V_n|) = " << a
          << "), beyond the trusted " << rounding::kTrustedFraction << "; ";
     const std::string wider = rounding::precision_for(a);
-    if (!std::isfinite(a))
+    if (!trusted(integration))
+      text << "the integration's error bound is " << to_double(integration)
+           << " of it (a slide coming to rest is followed to sqrt(eps) of the approach speed): --precision 50 narrows it";
+    else if (!std::isfinite(a))
       text << "K or an inertia tensor is not positive definite at this precision: solve with --precision 100";
     else if (wider.empty())
       text << "no precision of impact3d resolves it";

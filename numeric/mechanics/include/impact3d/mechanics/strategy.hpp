@@ -5,12 +5,14 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
 
+#include "impact3d/mechanics/stronge/history.hpp"
 #include "impact3d/scalar/types.hpp"
 
 namespace impact3d {
@@ -37,7 +39,7 @@ enum class ParameterType {
 struct Parameter {
   std::string_view key;
   ParameterType type;
-  std::array<std::string_view, 2> choices{};
+  std::span<const std::string_view> choices{};  // the first is the default
 };
 
 // A value verification draws for a parameter (verify.cpp): uniform in [lo, hi], or "critical", or the
@@ -100,6 +102,10 @@ struct ImpulseSolution {
   std::optional<Scalar> gir, cir, mu_t_critical, mu_z_critical;  // limits compared against
   std::optional<PlaneAxes<Scalar>> plane;  // the solution plane used: phi_FI (eq 15) or Wach's phi (eq 21)
   std::optional<Scalar> plane_angle_deg;    // its angle from t towards z
+  // An integrated impulse's error bound relative to |P_C| (strategies/stronge.hpp), which adds to the
+  // rounding bound; its course, for a report.
+  std::optional<Scalar> integration_error;
+  std::optional<stronge::History<Scalar>> history;
   WarningSet codes = 0;                     // the codes of `warnings`
   std::vector<Warning> warnings;            // with their text, for a report
   // What only a report prints: the warnings' text and the plane's angle. The lean path solves with it
@@ -130,6 +136,7 @@ struct RegimeDecision {
 // it returns this rather than throwing, so that an ordinary outcome costs no exception on the lean path.
 struct Singular {
   const char* what = nullptr;  // empty when the strategy solved
+  bool own_words = false;      // `what` is the whole reason, not a constraint system's name
   explicit operator bool() const { return what != nullptr; }
 };
 

@@ -647,6 +647,10 @@ FixedFloat<P> sqrt(const FixedFloat<P>& x) {
   return FixedFloat<P>::call(mpfr_sqrt, x);
 }
 template <int P>
+FixedFloat<P> log(const FixedFloat<P>& x) {
+  return FixedFloat<P>::call(mpfr_log, x);
+}
+template <int P>
 FixedFloat<P> floor(const FixedFloat<P>& x) {
   return x.floored();
 }

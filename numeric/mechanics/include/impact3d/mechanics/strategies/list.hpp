@@ -15,6 +15,7 @@
 
 #include "impact3d/mechanics/strategies/brach.hpp"
 #include "impact3d/mechanics/strategies/pc_crash.hpp"
+#include "impact3d/mechanics/strategies/stronge.hpp"
 #include "impact3d/mechanics/strategies/wach.hpp"
 
 namespace impact3d {
@@ -26,7 +27,7 @@ struct StrategyList {
   static constexpr std::size_t size = sizeof...(S);
 };
 
-using Strategies = StrategyList<PcCrash, Wach, Brach>;
+using Strategies = StrategyList<PcCrash, Wach, Brach, Stronge>;
 
 template <typename Scalar>
 using Strategy = Strategies::variant<Scalar>;

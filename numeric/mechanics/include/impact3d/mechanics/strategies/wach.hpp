@@ -13,6 +13,8 @@ namespace impact3d {
 
 enum class WachLimit { cir, gir };  // in the order of the parameter's choices
 
+inline constexpr std::string_view wach_limit_names[] = {"cir", "gir"};
+
 // The strategy's entry (strategies/list.hpp): its parameters and how it decides its regime; its solve
 // is strategies::solve below.
 // Tangent aligned with the initial sliding velocity (eqs 21-22), ratio capped at the plane's CIR or GIR.
@@ -23,7 +25,7 @@ struct Wach {
 
   static constexpr std::string_view name = "wach";
   static constexpr std::array<Parameter, 2> parameters{
-      {{"mu", ParameterType::non_negative}, {"limit", ParameterType::choice, {"cir", "gir"}}}};
+      {{"mu", ParameterType::non_negative}, {"limit", ParameterType::choice, wach_limit_names}}};
   static constexpr std::string_view friction_key = "mu";
   static constexpr std::array<std::array<ParameterDraw, 2>, 2> verified{
       {{{{0, 1.2}, {.choice = "cir"}}}, {{{0, 1.2}, {.choice = "gir"}}}}};

@@ -45,6 +45,9 @@ struct Follow {
   std::optional<Scalar> c_prev, s_prev;  // the sliding direction at the last step's end
   History<Scalar> h;
 
+  Follow(const Mat3<Scalar>& K_, const Vec3<Scalar>& U_i_, const Scalar& mu_, const Scalar& e_, RestitutionLaw law_, bool record_)
+      : K(K_), U_i(U_i_), mu(mu_), e(e_), law(law_), record(record_) {}
+
   Vec3<Scalar> U() const { return U_i - K * Vec3<Scalar>(x, a, b); }
 
   void event(EventKind kind, const Vec3<Scalar>& U_now) {
@@ -71,6 +74,7 @@ struct Follow {
   bool from_rest(bool at_start) {
     using std::atan2;
     sliding = false;
+    h.came_to_rest = !at_start;
     const auto r = map.stick_ratio();
     if (!r) return fail("the tangential block of K is singular: the contact cannot stick or slide out");
     if ((*r)[0] * (*r)[0] + (*r)[1] * (*r)[1] <= mu * mu) {
@@ -159,10 +163,13 @@ struct Follow {
     const std::size_t n = ser.a.size();
     // The step whose last two terms are eps (Jorba and Zou), at most 1 + x so that a series that ends
     // (no swerve) still steps through the impact's scale.
-    double step = to_double(Scalar(1) + x);
+    double step = to_double(Scalar(Scalar(1) + x));
     for (std::size_t j = n - 2; j < n; ++j) {
-      const double c = std::max(to_double(abs(ser.a[j])), to_double(abs(ser.b[j])));
-      if (c > 0) step = std::min(step, std::exp((std::log(to_double(eps)) - std::log(c)) / static_cast<double>(j)));
+      // The logarithm in Scalar: at 100 digits the terms pass double's range near a stop.
+      using std::log;
+      const Scalar c = std::max(Scalar(abs(ser.a[j])), Scalar(abs(ser.b[j])));
+      if (c > Scalar(0))
+        step = std::min(step, std::exp(to_double(Scalar((log(eps) - log(c)) / Scalar(static_cast<double>(j))))));
     }
     Scalar H(step);
     if (!(H > eps * (Scalar(1) + x))) return fail("the sliding phase's step fell below the precision"), false;
@@ -214,6 +221,27 @@ struct Follow {
     const Vec3<Scalar> U_now = U();
     const Scalar rho = sqrt(U_now(1) * U_now(1) + U_now(2) * U_now(2));
     turn_to(Scalar(U_now(1) / rho), Scalar(U_now(2) / rho));
+    // A 3D slide comes to rest along an invariant direction, its velocity's direction a non-integer
+    // power of the distance to the stop, so the steps only approach it geometrically: below sqrt(eps)
+    // the contact is taken to have stopped, the slide it skips (Delta x = rho / |d rho/dx| at most rho
+    // over the growth, with a tangential impulse of at most (1 + mu) times that) added to the bound.
+    // The skipped slide is taken at its first-order length: its value is then within the bound, and its
+    // derivatives are the stop's by implicit differentiation of rho(x) = 0, which the accepted point's
+    // are not (the point is where a step happened to end).
+    if (what == none && rho <= sqrt(eps)) {
+      const Scalar c = U_now(1) / rho, s = U_now(2) / rho;
+      const Scalar g = map.growth(mu, c, s);
+      h.error_bound += rho + (g < Scalar(0) ? Scalar((Scalar(1) + mu) * rho / -g) : Scalar(1));
+      if (g < Scalar(0)) {
+        const Scalar dx = rho / -g;
+        const Vec3<Scalar> U_then = U_i - K * Vec3<Scalar>(x + dx, a + mu * c * dx, b + mu * s * dx);
+        // Not across the phase's end, which the finish after the stop finds itself.
+        if (compressing ? U_then(0) > Scalar(0) : end_value(x + dx, W + U_now(0) * dx, U_then(0)) > Scalar(0))
+          W += (U_now(0) + U_then(0)) * dx / Scalar(2), x += dx, a += mu * c * dx, b += mu * s * dx;
+      }
+      c_prev.reset(), s_prev.reset();
+      return false;
+    }
     if (what == phase) {
       if (compressing) {
         end_compression(U_now);
@@ -243,6 +271,7 @@ struct Follow {
       if (!from_rest(true)) return h;
     } else {
       event(EventKind::slip, U());
+      c_prev = U_i(1) / rho_i, s_prev = U_i(2) / rho_i;
       while (slide_step(order)) {
         if (h.steps >= kMaxSteps) return fail("the sliding phase took more than 4096 steps"), h;
         if (x > Scalar(kMaxImpulse)) return fail("the impact does not end within 10^6 m' |V_ri| of normal impulse"), h;
@@ -266,11 +295,12 @@ template <typename Scalar>
 History<Scalar> integrate(const Mat3<Scalar>& K, const Scalar& m_prime, const Vec3<Scalar>& V_ri, const Scalar& mu,
                           const Scalar& e, RestitutionLaw law, bool record = true) {
   const Scalar v0 = V_ri.norm();
-  detail::Follow<Scalar> f{K, Vec3<Scalar>(V_ri / v0), mu, e, law, record};
+  detail::Follow<Scalar> f(K, Vec3<Scalar>(V_ri / v0), mu, e, law, record);
   History<Scalar> h = f.run();
   if (h.failure) return h;
   const Scalar p0 = m_prime * v0;
   h.P_C = Vec3<Scalar>(f.x, f.a, f.b) * p0;
+  h.relative_error = h.error_bound * p0 / h.P_C.norm();
   h.V_rf = f.U() * v0;
   for (auto& ev : h.events) ev.p *= p0, ev.V_C *= v0, ev.normal_work *= p0 * v0;
   h.work_compression *= p0 * v0, h.work_restitution *= p0 * v0;

@@ -9,6 +9,8 @@
 #include <limits>
 #include <vector>
 
+#include "impact3d/scalar/types.hpp"
+
 namespace impact3d::stronge {
 
 // c[0] + c[1] x + ... at x, by Horner.
@@ -22,7 +24,7 @@ Scalar polynomial_at(const std::vector<Scalar>& c, const Scalar& x) {
 // The root of c in [lo, hi], where c(lo) and c(hi) differ in sign, to the last bit the bisection can
 // split (at most `kBisections` halvings: 128 more than the widest scalar's bits).
 template <typename Scalar>
-Scalar bisect_root(const std::vector<Scalar>& c, Scalar lo, Scalar hi) {
+Scalar bisect_bracket(const std::vector<Scalar>& c, Scalar lo, Scalar hi) {
   constexpr int kBisections = 128 + 400;
   const bool lo_negative = polynomial_at(c, lo) < Scalar(0);
   for (int i = 0; i < kBisections; ++i) {
@@ -34,6 +36,27 @@ Scalar bisect_root(const std::vector<Scalar>& c, Scalar lo, Scalar hi) {
     else hi = mid;
   }
   return (lo + hi) / Scalar(2);
+}
+
+// One Newton step from a root found to the last bit: its value unchanged, and for a dual number the
+// derivative of the root, -dc/dtheta / c'(x), implicit differentiation at the root (bisection's
+// midpoints carry none).
+template <typename Scalar>
+Scalar with_root_derivative(const std::vector<Scalar>& c, const Scalar& x) {
+  if constexpr (!is_dual_v<Scalar>) {
+    return x;
+  } else {
+    Scalar d(0);
+    for (std::size_t i = c.size(); i-- > 1;) d = d * x + c[i] * Scalar(static_cast<double>(i));
+    if (!(d != Scalar(0))) return x;
+    return x - polynomial_at(c, x) / d;
+  }
+}
+
+// bisect_bracket's root, with its derivative for a dual number.
+template <typename Scalar>
+Scalar bisect_root(const std::vector<Scalar>& c, const Scalar& lo, const Scalar& hi) {
+  return with_root_derivative(c, bisect_bracket(c, lo, hi));
 }
 
 // The real roots of c (c.back() != 0), in increasing order; `zero` is the size of a critical value

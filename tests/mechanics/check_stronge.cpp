@@ -1,0 +1,150 @@
+// Stronge's integrated impulse (mechanics/stronge/) on seeded random collisions, by consistency:
+// - the double integration holds the 50-digit one within the two integrations' stated error bounds;
+// - the total turning of the sliding direction is at least its net turn;
+// - the kinetic energy the impact takes, from the end state, is the normal work (W_c - W_r) plus the
+//   friction's, which is never negative; under the energetic law W_r = e^2 W_c, so it never gains;
+// - solved as a strategy, the result is the integration's and carries its warning and history.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "impact3d/mechanics/stronge/integrate.hpp"
+#include "support.hpp"
+
+namespace check_stronge {
+
+using namespace impact3d;
+using namespace impact3d::test;
+using stronge::RestitutionLaw;
+
+namespace {
+
+constexpr RestitutionLaw kLaws[] = {RestitutionLaw::energetic, RestitutionLaw::poisson, RestitutionLaw::newton};
+
+// (m'/2) V^T K^-1 V: the pair's kinetic energy that the relative velocity V carries (m' dV = -K dP, so
+// its change is -integral V . dP, the work of the contact impulse).
+double relative_energy(const M3& K, double m_prime, const V3& V) { return m_prime * V.dot(K.ldlt().solve(V)) / 2; }
+
+struct Draw {
+  Problem<double> p;
+  double mu;
+};
+
+Draw draw_collision(std::mt19937_64& g) {
+  std::uniform_real_distribution<double> u(0, 1);
+  const Scene<double> s = random_scene(g);
+  return {make_problem<GeneratedEngine>(s), 1.2 * u(g)};
+}
+
+}  // namespace
+
+// The bound each precision states covers its truncation, its events and a stop taken below sqrt(eps);
+// 64 eps of double covers the roundings of the final scaling by m' |V_ri| and of K's entries, which
+// the two runs share exactly (the 50-digit one starts from the same doubles).
+TEST_CASE("double holds the 50-digit integration within the two stated bounds", "[stronge]") {
+#if IMPACT3D_MULTIPRECISION
+  using W = mp::float50;
+  std::mt19937_64 g(5901);
+  int checked = 0, stopped = 0;
+  double worst = 0;
+  for (int n = 0; n < 20; ++n) {
+    const Draw d = draw_collision(g);
+    for (const RestitutionLaw law : kLaws) {
+      const auto lo = stronge::integrate(d.p.K, d.p.m_prime, d.p.V_ri, d.mu, d.p.restitution, law, true);
+      const auto hi = stronge::integrate<W>(d.p.K.cast<W>(), W(d.p.m_prime), d.p.V_ri.cast<W>(), W(d.mu), W(d.p.restitution),
+                                            law, true);
+      REQUIRE(lo.failure == nullptr);
+      REQUIRE(hi.failure == nullptr);
+      const V3 reference = hi.P_C.cast<double>();
+      const double gap = (lo.P_C - reference).norm() / reference.norm();
+      const double bound = lo.relative_error + static_cast<double>(hi.relative_error) + 64 * eps;
+      CHECK(gap <= bound);
+      worst = std::max(worst, gap / bound);
+      for (const auto& ev : lo.events) stopped += ev.kind == stronge::EventKind::stick || ev.kind == stronge::EventKind::reversal;
+      ++checked;
+    }
+  }
+  WARN("worst gap " << worst << " of its bound; " << stopped << " of " << checked << " stopped sliding");
+  CHECK(checked == 60);
+  CHECK(stopped > 0);  // the draws reach the stop, where the bound is widest
+#else
+  WARN("built without multiprecision: nothing to compare against");
+#endif
+}
+
+TEST_CASE("the swerve is at least the sliding direction's net turn",
+          "[stronge]") {
+  std::mt19937_64 g(5902);
+  int checked = 0;
+  for (int n = 0; n < 200; ++n) {
+    const Draw d = draw_collision(g);
+    const auto h = stronge::integrate(d.p.K, d.p.m_prime, d.p.V_ri, d.mu, d.p.restitution, RestitutionLaw::energetic);
+    REQUIRE(h.failure == nullptr);
+    CHECK(h.swerve_deg >= 0);
+    bool stopped = false;
+    for (const auto& ev : h.events) stopped = stopped || ev.kind == stronge::EventKind::stick || ev.kind == stronge::EventKind::reversal;
+    if (stopped || !h.final_direction_deg) continue;
+    const double start = std::atan2(d.p.V_ri.z(), d.p.V_ri.y()) * 180 / M_PI;
+    const double turn = std::remainder(*h.final_direction_deg - start, 360.0);
+    // Both directions come from atan2 of quantities known to a few eps of the sliding speed: 1e-9 degrees
+    // is far above that for any slide not about to stop (which the loop skips) and far below a turn.
+    CHECK(std::fabs(turn) <= h.swerve_deg + 1e-9);
+    ++checked;
+  }
+  WARN(checked << " of 200 slid throughout");
+  CHECK(checked > 20);
+}
+
+// The tolerance: the energies are quadratic in V, so an impulse error of error_bound m' |V_ri| moves them
+// by about 2 |V| of it; the normal work is integrated with the same bound; 64 kappa eps for the solve
+// with K^-1 and the sums of energies of order m' |V_ri|^2.
+TEST_CASE("the energy taken is the normal work plus the friction's; the energetic law never gains", "[stronge]") {
+  std::mt19937_64 g(5903);
+  int checked = 0, newton_gained = 0;
+  for (int n = 0; n < 200; ++n) {
+    const Draw d = draw_collision(g);
+    for (const RestitutionLaw law : kLaws) {
+      const auto h = stronge::integrate(d.p.K, d.p.m_prime, d.p.V_ri, d.mu, d.p.restitution, law);
+      REQUIRE(h.failure == nullptr);
+      const double v0 = d.p.V_ri.norm(), scale = d.p.m_prime * v0 * v0;
+      const double tol = (4 * h.error_bound * (1 + h.V_rf.norm() / v0) + 64 * d.p.kappa * eps) * scale;
+      const double taken = relative_energy(d.p.K, d.p.m_prime, d.p.V_ri) - relative_energy(d.p.K, d.p.m_prime, h.V_rf);
+      const double normal = h.work_compression - h.work_restitution;
+      CHECK(taken >= normal - tol);  // friction's work mu |u| dp is never negative
+      if (d.mu == 0) CHECK(std::fabs(taken - normal) <= tol);
+      if (law == RestitutionLaw::energetic) {
+        const double e = d.p.restitution;
+        CHECK(std::fabs(h.work_restitution - e * e * h.work_compression) <= tol);
+        CHECK(taken >= -tol);
+      }
+      newton_gained += law == RestitutionLaw::newton && taken < -tol;
+      ++checked;
+    }
+  }
+  WARN("Newton's law gained energy in " << newton_gained << " of 200");
+  CHECK(checked == 600);
+}
+
+TEST_CASE("solved as a strategy: the integration's impulse, its history, the rounding warning and momentum",
+          "[stronge]") {
+  std::mt19937_64 g(5904);
+  int checked = 0;
+  for (int n = 0; n < 50; ++n) {
+    const Scene<double> s = random_scene(g);
+    const Problem<double> p = make_problem<GeneratedEngine>(s);
+    for (const RestitutionLaw law : kLaws) {
+      const Solution<double> sol = solve_one(s, Stronge<double>{0.5, law});
+      const auto h = stronge::integrate(p.K, p.m_prime, p.V_ri, 0.5, p.restitution, law);
+      CHECK((sol.impulse.P_C - h.P_C).norm() <= 4 * eps * h.P_C.norm());
+      CHECK(*sol.impulse.mu <= 0.5 * (1 + 8 * eps));
+      CHECK((sol.impulse.regime == Regime::full) == !h.final_direction_deg.has_value());
+      bool rounding = false;
+      for (const auto& w : sol.warnings) rounding = rounding || w.code == WarningCode::rounding;
+      if (h.relative_error > rounding::kTrustedFraction) CHECK(rounding);
+      ++checked;
+    }
+  }
+  CHECK(checked == 150);
+}
+
+}  // namespace check_stronge
