@@ -38,7 +38,7 @@ Draw draw_collision(std::mt19937_64& g) {
 
 }  // namespace
 
-// The bound each precision states covers its truncation, its events and a stop taken below sqrt(eps);
+// The bound each precision states covers its truncation, its events and a stop taken at 16 eps;
 // 64 eps of double covers the roundings of the final scaling by m' |V_ri| and of K's entries, which
 // the two runs share exactly (the 50-digit one starts from the same doubles).
 TEST_CASE("double holds the 50-digit integration within the two stated bounds", "[stronge]") {

@@ -214,7 +214,9 @@ TEST_CASE("isotropic contact: no swerve, a straight slide to rest, the closed fo
       const double slid = mu * std::min(p_f, p_s);
       const V3 expected(p_f, slid * V_i.y() / rho, slid * V_i.z() / rho);
       CHECK(relative_gap(got.P_C, expected) / eps <= 64);
-      CHECK(got.swerve_deg <= 64 * eps);
+      INFO("swerve " << got.swerve_deg << " deg in " << got.steps << " steps");
+      // Each step's turn is the angle between two directions each rounded to an eps or two: 4 eps rad a step.
+      CHECK(got.swerve_deg <= 4 * eps * got.steps * 180 / M_PI);
       ++checked;
     }
   CHECK(checked == 9);

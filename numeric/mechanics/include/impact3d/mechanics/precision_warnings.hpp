@@ -103,7 +103,7 @@ void flag_precision(Solution<Scalar>& s, const Scalar& amplification, const Scal
     const std::string wider = rounding::precision_for(a);
     if (!trusted(integration))
       text << "the integration's error bound is " << to_double(integration)
-           << " of it (a slide coming to rest is followed to sqrt(eps) of the approach speed): --precision 50 narrows it";
+           << " of it (the steps' truncation, its events and the last of a slide to rest): --precision 50 narrows it";
     else if (!std::isfinite(a))
       text << "K or an inertia tensor is not positive definite at this precision: solve with --precision 100";
     else if (wider.empty())

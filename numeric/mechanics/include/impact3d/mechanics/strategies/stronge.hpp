@@ -72,15 +72,6 @@ Singular solve(const Problem<Scalar>& p, const Stronge<Scalar>& spec, ImpulseSol
     flag_if_not_finite(out, *out.mu_t, "mu_t");
     flag_if_not_finite(out, *out.mu_z, "mu_z");
     out.integration_error = h.relative_error;
-    // The step that reaches a stop is a series in p whose radius of convergence ends there (u / |u| is
-    // singular at u = 0), so the stop's p and what follows are differentiated to about sqrt(eps) of
-    // their size (check_sensitivity measures it), not to the values' rounding.
-    if constexpr (is_dual_v<Scalar>)
-      if (h.came_to_rest)
-        out.warn(WarningCode::rounding, [] {
-          return std::string("rounding: stronge's derivatives through the stop of the sliding hold to about 1e-8 of "
-                             "their size; the values are not affected");
-        });  // the rounding warning counts it (precision_warnings.hpp)
     if (out.for_report) out.history = std::move(h);
     return {};
   }

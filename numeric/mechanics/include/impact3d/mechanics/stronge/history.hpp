@@ -48,7 +48,6 @@ struct History {
   // Coulomb's law allows; more than one means the choice (the fastest growing) was not forced.
   int diverging_directions = 0;
   int steps = 0;                    // Taylor steps of the sliding phase
-  bool came_to_rest = false;        // sliding stopped during the impact (a stick or a reversal)
   // Bound on the integration's error, relative to |V_ri| (velocities) and m' |V_ri| (impulses): the
   // truncation of every step, the events' location and a contact taken to have stopped sliding.
   Scalar error_bound = Scalar(0);

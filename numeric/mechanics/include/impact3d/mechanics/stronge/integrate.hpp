@@ -1,16 +1,19 @@
 // Stronge's impact followed through the normal impulse p, from m', K and V_ri (eq 9), to the end that
 // the restitution law sets. The contact slides (a Taylor series step, sliding_series.hpp, of order
-// ceil(-ln eps / 2) + 1 and the step that makes its next term eps, Jorba and Zou's rule) until sliding
-// stops; from then on the impulse rate is constant (sticking, or sliding out along an invariant
-// direction, tangential_map.hpp) and every event is a closed form. Events inside a step are the roots of
-// its polynomials, bisected to the last bit.
+// ceil(-ln eps / 2) + 1 and the step that makes its next term eps, Jorba and Zou's rule; below kApproach
+// of the approach speed in the regular variable tau, approach_series.hpp) until sliding stops; from then
+// on the impulse rate is constant (sticking, or sliding out along an invariant direction,
+// tangential_map.hpp) and every event is a closed form. Events inside a step are the roots of its
+// polynomials, bisected to the last bit.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <optional>
 
+#include "impact3d/mechanics/stronge/approach_series.hpp"
 #include "impact3d/mechanics/stronge/history.hpp"
 #include "impact3d/mechanics/stronge/real_roots.hpp"
 #include "impact3d/mechanics/stronge/sliding_series.hpp"
@@ -21,6 +24,8 @@ namespace impact3d::stronge {
 // Limits on one integration (docs/limits.md): Taylor steps, and impulse over m' v0.
 inline constexpr int kMaxSteps = 4096;
 inline constexpr double kMaxImpulse = 1e6;
+// Below this sliding speed (over the approach speed) the slide is followed in tau (approach_series.hpp).
+inline constexpr double kApproach = 1.0 / 16;
 
 template <typename Scalar>
 int taylor_order() {
@@ -43,6 +48,7 @@ struct Follow {
   Scalar f_t{0}, f_z{0};  // the tangential impulse rate once it is constant
   Scalar x_c{0}, W_c{0};
   std::optional<Scalar> c_prev, s_prev;  // the sliding direction at the last step's end
+  std::optional<std::array<Scalar, 2>> u_carried;  // the sliding velocity, while followed in tau
   History<Scalar> h;
 
   Follow(const Mat3<Scalar>& K_, const Vec3<Scalar>& U_i_, const Scalar& mu_, const Scalar& e_, RestitutionLaw law_, bool record_)
@@ -74,7 +80,6 @@ struct Follow {
   bool from_rest(bool at_start) {
     using std::atan2;
     sliding = false;
-    h.came_to_rest = !at_start;
     const auto r = map.stick_ratio();
     if (!r) return fail("the tangential block of K is singular: the contact cannot stick or slide out");
     if ((*r)[0] * (*r)[0] + (*r)[1] * (*r)[1] <= mu * mu) {
@@ -154,40 +159,111 @@ struct Follow {
     c_prev = c, s_prev = s;
   }
 
+  // The end condition as a polynomial of a step, positive now: from the step's series of x, W and U_n.
+  std::vector<Scalar> ending_polynomial(const std::vector<Scalar>& x_series, const std::vector<Scalar>& W_series,
+                                        const std::vector<Scalar>& U_n_series) const {
+    if (compressing) return U_n_series;
+    std::vector<Scalar> ending;
+    if (law == RestitutionLaw::energetic) {
+      ending = W_series;
+      ending[0] -= (Scalar(1) - e * e) * W_c;
+    } else if (law == RestitutionLaw::poisson) {
+      ending.resize(x_series.size());
+      for (std::size_t j = 0; j < x_series.size(); ++j) ending[j] = -x_series[j];
+      ending[0] += (Scalar(1) + e) * x_c;
+    } else {
+      ending = U_n_series;
+      ending[0] += e * U_i(0);
+    }
+    return ending;
+  }
+
+  // The step whose last two terms of `v` (relative to `scale`) are eps, Jorba and Zou's rule; the
+  // logarithm in Scalar, for at 100 digits the terms pass double's range near a stop.
+  double step_size(const std::vector<Scalar>& v1, const std::vector<Scalar>& v2, const Scalar& scale, double cap) const {
+    using std::abs;
+    using std::log;
+    const std::size_t n = v1.size();
+    double step = cap;
+    for (std::size_t j = n - 2; j < n; ++j) {
+      const Scalar c = std::max(Scalar(abs(v1[j])), Scalar(abs(v2[j]))) / scale;
+      if (c > Scalar(0))
+        step = std::min(step, std::exp(to_double(Scalar((log(eps) - log(c)) / Scalar(static_cast<double>(j))))));
+    }
+    return step;
+  }
+
+  // The phase's end reached inside a step: compression's end, or the impact's.
+  bool phase_ended(const Vec3<Scalar>& U_now) {
+    if (compressing) {
+      end_compression(U_now);
+      if (!(end_value(x, W, U_now(0)) > Scalar(0))) return finish_sliding(U_now), false;
+      return true;
+    }
+    return finish_sliding(U_now), false;
+  }
+
+  // One step of a slide slower than kApproach of the approach speed, in tau (approach_series.hpp), to
+  // sliding at 16 eps of it, where the contact is taken to stop: the slide that skips is at most
+  // 16 eps over the growth, added to the bound with the steps' truncation.
+  bool approach_step(int order) {
+    using std::abs;
+    using std::sqrt;
+    if (!u_carried) {
+      const Vec3<Scalar> U_now = U();
+      u_carried = {U_now(1), U_now(2)};
+    }
+    const ApproachSeries<Scalar> ser = approach_series(K, U_i, mu, x, a, b, W, (*u_carried)[0], (*u_carried)[1], order);
+    const std::size_t n = ser.x.size();
+    const Scalar rho0 = sqrt(ser.u_t[0] * ser.u_t[0] + ser.u_z[0] * ser.u_z[0]);
+    Scalar H(step_size(ser.u_t, ser.u_z, rho0, 1e6));
+    bool ends = false;
+    if (const auto root = first_root(ending_polynomial(ser.x, ser.W, ser.U_n), H)) H = *root, ends = true;
+    Scalar last(0);
+    for (const auto* v : {&ser.x, &ser.a, &ser.b}) last = std::max(last, Scalar(abs((*v)[n - 1])));
+    Scalar Hn(1);
+    for (std::size_t j = 0; j + 1 < n; ++j) Hn *= H;
+    h.error_bound += last * Hn + eps;
+    ++h.steps;
+    x = polynomial_at(ser.x, H), a = polynomial_at(ser.a, H), b = polynomial_at(ser.b, H), W = polynomial_at(ser.W, H);
+    const Vec3<Scalar> U_now = U();
+    const Scalar ut = polynomial_at(ser.u_t, H), uz = polynomial_at(ser.u_z, H);
+    u_carried = {ut, uz};
+    const Scalar rho = sqrt(ut * ut + uz * uz);
+    if (rho > Scalar(0)) turn_to(Scalar(ut / rho), Scalar(uz / rho));
+    if (ends) return u_carried.reset(), phase_ended(U_now);
+    if (rho <= Scalar(16) * eps) {
+      u_carried.reset();
+      const Scalar g = rho > Scalar(0) ? map.growth(mu, Scalar(ut / rho), Scalar(uz / rho)) : Scalar(-1);
+      h.error_bound += rho + (g < Scalar(0) ? Scalar((Scalar(1) + mu) * rho / -g) : Scalar(1));
+      c_prev.reset(), s_prev.reset();
+      return false;
+    }
+    return true;
+  }
+
   // One Taylor step of the sliding phase; false when the phase is over (sliding stopped or the impact
   // ended) or failed.
   bool slide_step(int order) {
     using std::abs;
     using std::sqrt;
+    {
+      const Vec3<Scalar> U_now = U();
+      const Scalar ut = u_carried ? (*u_carried)[0] : U_now(1), uz = u_carried ? (*u_carried)[1] : U_now(2);
+      if (ut * ut + uz * uz <= Scalar(kApproach * kApproach)) return approach_step(order);
+      u_carried.reset();
+    }
     const SlidingSeries<Scalar> ser = sliding_series(K, U_i, mu, x, a, b, W, order);
     const std::size_t n = ser.a.size();
-    // The step whose last two terms are eps (Jorba and Zou), at most 1 + x so that a series that ends
-    // (no swerve) still steps through the impact's scale.
-    double step = to_double(Scalar(Scalar(1) + x));
-    for (std::size_t j = n - 2; j < n; ++j) {
-      // The logarithm in Scalar: at 100 digits the terms pass double's range near a stop.
-      using std::log;
-      const Scalar c = std::max(Scalar(abs(ser.a[j])), Scalar(abs(ser.b[j])));
-      if (c > Scalar(0))
-        step = std::min(step, std::exp(to_double(Scalar((log(eps) - log(c)) / Scalar(static_cast<double>(j))))));
-    }
-    Scalar H(step);
+    // At most 1 + x, so that a series that ends (no swerve) still steps through the impact's scale.
+    Scalar H(step_size(ser.a, ser.b, Scalar(1), to_double(Scalar(Scalar(1) + x))));
     if (!(H > eps * (Scalar(1) + x))) return fail("the sliding phase's step fell below the precision"), false;
     // The events the step may hold, each a polynomial positive now.
     std::vector<Scalar> radial(n);  // u(h) . u(0)
     for (std::size_t j = 0; j < n; ++j) radial[j] = ser.u_t[j] * ser.u_t[0] + ser.u_z[j] * ser.u_z[0];
-    std::vector<Scalar> ending = ser.U_n;
-    if (!compressing) {
-      if (law == RestitutionLaw::energetic) {
-        ending = ser.W;
-        ending[0] -= (Scalar(1) - e * e) * W_c;
-      } else if (law == RestitutionLaw::poisson) {
-        ending.assign(2, Scalar(0));
-        ending[0] = (Scalar(1) + e) * x_c - x, ending[1] = Scalar(-1);
-      } else {
-        ending[0] += e * U_i(0);
-      }
-    }
+    std::vector<Scalar> x_series(n, Scalar(0));
+    x_series[0] = x, x_series[1] = Scalar(1);
+    const std::vector<Scalar> ending = ending_polynomial(x_series, ser.W, ser.U_n);
     enum { none, stop, phase } what = none;
     const auto ends = first_root(ending, H);
     if (ends) H = *ends, what = phase;
@@ -196,8 +272,11 @@ struct Follow {
     if (stops) {
       const Scalar ut = polynomial_at(ser.u_t, *stops), uz = polynomial_at(ser.u_z, *stops);
       rho_at_stop = sqrt(ut * ut + uz * uz);
-      // A crossing far from u = 0 is the direction turning past a right angle within the step: no event.
-      if (rho_at_stop <= sqrt(eps)) H = *stops, what = stop;
+      // At u = 0 within rounding, a stop (a slide straight to rest); below kApproach the step ends there
+      // and the slide is followed in tau from it; a crossing farther out is the direction turning past a
+      // right angle within the step: no event.
+      if (rho_at_stop <= Scalar(64) * eps) H = *stops, what = stop;
+      else if (rho_at_stop <= Scalar(kApproach)) H = *stops, what = none;
     }
     // The truncation of this step: its last term at H.
     Scalar last(0);
@@ -221,35 +300,7 @@ struct Follow {
     const Vec3<Scalar> U_now = U();
     const Scalar rho = sqrt(U_now(1) * U_now(1) + U_now(2) * U_now(2));
     turn_to(Scalar(U_now(1) / rho), Scalar(U_now(2) / rho));
-    // A 3D slide comes to rest along an invariant direction, its velocity's direction a non-integer
-    // power of the distance to the stop, so the steps only approach it geometrically: below sqrt(eps)
-    // the contact is taken to have stopped, the slide it skips (Delta x = rho / |d rho/dx| at most rho
-    // over the growth, with a tangential impulse of at most (1 + mu) times that) added to the bound.
-    // The skipped slide is taken at its first-order length: its value is then within the bound, and its
-    // derivatives are the stop's by implicit differentiation of rho(x) = 0, which the accepted point's
-    // are not (the point is where a step happened to end).
-    if (what == none && rho <= sqrt(eps)) {
-      const Scalar c = U_now(1) / rho, s = U_now(2) / rho;
-      const Scalar g = map.growth(mu, c, s);
-      h.error_bound += rho + (g < Scalar(0) ? Scalar((Scalar(1) + mu) * rho / -g) : Scalar(1));
-      if (g < Scalar(0)) {
-        const Scalar dx = rho / -g;
-        const Vec3<Scalar> U_then = U_i - K * Vec3<Scalar>(x + dx, a + mu * c * dx, b + mu * s * dx);
-        // Not across the phase's end, which the finish after the stop finds itself.
-        if (compressing ? U_then(0) > Scalar(0) : end_value(x + dx, W + U_now(0) * dx, U_then(0)) > Scalar(0))
-          W += (U_now(0) + U_then(0)) * dx / Scalar(2), x += dx, a += mu * c * dx, b += mu * s * dx;
-      }
-      c_prev.reset(), s_prev.reset();
-      return false;
-    }
-    if (what == phase) {
-      if (compressing) {
-        end_compression(U_now);
-        if (!(end_value(x, W, U_now(0)) > Scalar(0))) return finish_sliding(U_now), false;
-        return true;
-      }
-      return finish_sliding(U_now), false;
-    }
+    if (what == phase) return phase_ended(U_now);
     return true;
   }
 

@@ -1,0 +1,63 @@
+// The Taylor series of a slide coming to rest, in the time-like variable tau with dx = |u| dtau
+// (x = p / (m' v0), sliding_series.hpp). In x the sliding direction u / |u| near a 3D stop is a
+// non-integer power of the distance to it, so steps in x only approach the stop geometrically; in tau
+//   dx/dtau = |u|,   da/dtau = mu u_t,   db/dtau = mu u_z,   dW/dtau = U_n |u|,
+// with U = U_i - K (x, a, b), is homogeneous of degree one in u and regular: the stop is tau -> infinity,
+// |u| falls exponentially and the direction settles on an invariant direction (tangential_map.hpp).
+// No division by |u|: only its square root's recurrence.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "impact3d/mechanics/stronge/sliding_series.hpp"
+
+namespace impact3d::stronge {
+
+template <typename Scalar>
+struct ApproachSeries {
+  // Coefficients 0..order of each quantity in tau - tau0.
+  std::vector<Scalar> x, a, b, W, U_n, u_t, u_z;
+};
+
+// The series about (x0, a0, b0, W0) to `order`, with the sliding velocity u0 there (carried by the steps:
+// U_i - K P loses its relative accuracy as u falls towards rounding); u0 must not be zero.
+template <typename Scalar>
+ApproachSeries<Scalar> approach_series(const Mat3<Scalar>& K, const Vec3<Scalar>& U_i, const Scalar& mu,
+                                       const Scalar& x0, const Scalar& a0, const Scalar& b0, const Scalar& W0,
+                                       const Scalar& u0_t, const Scalar& u0_z, int order) {
+  using std::sqrt;
+  const std::size_t n = static_cast<std::size_t>(order) + 1;
+  ApproachSeries<Scalar> s;
+  for (auto* v : {&s.x, &s.a, &s.b, &s.W, &s.U_n, &s.u_t, &s.u_z}) v->assign(n, Scalar(0));
+  std::vector<Scalar> sq(n, Scalar(0)), r(n, Scalar(0));
+  s.x[0] = x0, s.a[0] = a0, s.b[0] = b0, s.W[0] = W0;
+  for (std::size_t j = 0; j < n; ++j) {
+    for (int row = 0; row < 3; ++row) {
+      Scalar c = -(K(row, 0) * s.x[j] + K(row, 1) * s.a[j] + K(row, 2) * s.b[j]);
+      if (j == 0) c += U_i(row);
+      (row == 0 ? s.U_n : row == 1 ? s.u_t : s.u_z)[j] = c;
+    }
+    if (j == 0) s.u_t[0] = u0_t, s.u_z[0] = u0_z;
+    // |u|^2 and |u| by Cauchy products: r_0 r_j twice plus the cross terms make sq_j.
+    for (std::size_t i = 0; i <= j; ++i) sq[j] += s.u_t[i] * s.u_t[j - i] + s.u_z[i] * s.u_z[j - i];
+    if (j == 0) {
+      r[0] = sqrt(sq[0]);
+    } else {
+      Scalar cross(0);
+      for (std::size_t i = 1; i < j; ++i) cross += r[i] * r[j - i];
+      r[j] = (sq[j] - cross) / (Scalar(2) * r[0]);
+    }
+    if (j + 1 == n) break;
+    const Scalar k(static_cast<long long>(j + 1));
+    s.x[j + 1] = r[j] / k;
+    s.a[j + 1] = mu * s.u_t[j] / k;
+    s.b[j + 1] = mu * s.u_z[j] / k;
+    Scalar w(0);
+    for (std::size_t i = 0; i <= j; ++i) w += s.U_n[i] * r[j - i];
+    s.W[j + 1] = w / k;
+  }
+  return s;
+}
+
+}  // namespace impact3d::stronge
