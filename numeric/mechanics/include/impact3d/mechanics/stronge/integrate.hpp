@@ -216,14 +216,15 @@ struct Follow {
     const ApproachSeries<Scalar> ser = approach_series(K, U_i, mu, x, a, b, W, (*u_carried)[0], (*u_carried)[1], order);
     const std::size_t n = ser.x.size();
     const Scalar rho0 = sqrt(ser.u_t[0] * ser.u_t[0] + ser.u_z[0] * ser.u_z[0]);
+    if (!(rho0 > Scalar(0))) return u_carried.reset(), c_prev.reset(), s_prev.reset(), false;  // at rest already
     Scalar H(step_size(ser.u_t, ser.u_z, rho0, 1e6));
     bool ends = false;
     if (const auto root = first_root(ending_polynomial(ser.x, ser.W, ser.U_n), H)) H = *root, ends = true;
     Scalar last(0);
-    for (const auto* v : {&ser.x, &ser.a, &ser.b}) last = std::max(last, Scalar(abs((*v)[n - 1])));
+    for (const auto* v : {&ser.x, &ser.a, &ser.b, &ser.W, &ser.u_t, &ser.u_z}) last = std::max(last, Scalar(abs((*v)[n - 1])));
     Scalar Hn(1);
     for (std::size_t j = 0; j + 1 < n; ++j) Hn *= H;
-    h.error_bound += last * Hn + eps;
+    h.error_bound += last * Hn + eps * (Scalar(1) + x);
     ++h.steps;
     x = polynomial_at(ser.x, H), a = polynomial_at(ser.a, H), b = polynomial_at(ser.b, H), W = polynomial_at(ser.W, H);
     const Vec3<Scalar> U_now = U();
@@ -231,11 +232,13 @@ struct Follow {
     u_carried = {ut, uz};
     const Scalar rho = sqrt(ut * ut + uz * uz);
     if (rho > Scalar(0)) turn_to(Scalar(ut / rho), Scalar(uz / rho));
-    if (ends) return u_carried.reset(), phase_ended(U_now);
+    // After compression's end the slide goes on with the velocity carried; after the impact's, it is done.
+    if (ends && !phase_ended(U_now)) return u_carried.reset(), false;
     if (rho <= Scalar(16) * eps) {
       u_carried.reset();
       const Scalar g = rho > Scalar(0) ? map.growth(mu, Scalar(ut / rho), Scalar(uz / rho)) : Scalar(-1);
-      h.error_bound += rho + (g < Scalar(0) ? Scalar((Scalar(1) + mu) * rho / -g) : Scalar(1));
+      // The slide skipped: Delta x <= rho / |g|, the tangential impulse's change of rate at most 2 mu.
+      h.error_bound += g < Scalar(0) ? Scalar(rho * (Scalar(1) + Scalar(2) * mu / -g)) : Scalar(1);
       c_prev.reset(), s_prev.reset();
       return false;
     }
@@ -280,10 +283,10 @@ struct Follow {
     }
     // The truncation of this step: its last term at H.
     Scalar last(0);
-    for (const auto* v : {&ser.a, &ser.b}) last = std::max(last, Scalar(abs((*v)[n - 1])));
+    for (const auto* v : {&ser.a, &ser.b, &ser.W}) last = std::max(last, Scalar(abs((*v)[n - 1])));
     Scalar Hn(1);
     for (std::size_t j = 0; j + 1 < n; ++j) Hn *= H;
-    h.error_bound += last * Hn + eps;
+    h.error_bound += last * Hn + eps * (Scalar(1) + x);
     ++h.steps;
     x += H, a = polynomial_at(ser.a, H), b = polynomial_at(ser.b, H), W = polynomial_at(ser.W, H);
     if (what == stop) {
@@ -293,7 +296,8 @@ struct Follow {
       const Scalar vt = -polynomial_at(dt, H), vz = -polynomial_at(dz, H);
       const Scalar len = sqrt(vt * vt + vz * vz);
       if (len > Scalar(0)) turn_to(Scalar(vt / len), Scalar(vz / len));
-      h.error_bound += rho_at_stop;
+      // The slide left at the root: at most rho over the speed's rate len, the rate of P_t changing by 2 mu.
+      h.error_bound += len > Scalar(0) ? Scalar(rho_at_stop * (Scalar(1) + Scalar(2) * mu / len)) : Scalar(1);
       c_prev.reset(), s_prev.reset();
       return false;
     }
@@ -306,9 +310,9 @@ struct Follow {
 
   void finish_sliding(const Vec3<Scalar>& U_now) {
     using std::atan2;
-    using std::sqrt;
-    const Scalar rho = sqrt(U_now(1) * U_now(1) + U_now(2) * U_now(2));
-    h.final_direction_deg = degrees(Scalar(atan2(U_now(2) / rho, U_now(1) / rho)));
+    // The carried velocity where the slide was followed in tau: U_i - K P is rounding there.
+    const Scalar ut = u_carried ? (*u_carried)[0] : U_now(1), uz = u_carried ? (*u_carried)[1] : U_now(2);
+    h.final_direction_deg = degrees(Scalar(atan2(uz, ut)));
     ended = true;
   }
   bool ended = false;

@@ -49,7 +49,11 @@ Scalar with_root_derivative(const std::vector<Scalar>& c, const Scalar& x) {
     Scalar d(0);
     for (std::size_t i = c.size(); i-- > 1;) d = d * x + c[i] * Scalar(static_cast<double>(i));
     if (!(d != Scalar(0))) return x;
-    return x - polynomial_at(c, x) / d;
+    // The Newton correction's derivative alone: its value, c(x) / c'(x), would move the root off the
+    // value the other precisions find (far, at a nearly tangent crossing).
+    Scalar correction = polynomial_at(c, x) / d;
+    correction.value() = 0;
+    return x - correction;
   }
 }
 
