@@ -4,7 +4,7 @@
 //   dx/dtau = |u|,   da/dtau = mu u_t,   db/dtau = mu u_z,   dW/dtau = U_n |u|,
 // with U = U_i - K (x, a, b), is homogeneous of degree one in u and regular: the stop is tau -> infinity,
 // |u| falls exponentially and the direction settles on an invariant direction (tangential_map.hpp).
-// No division by |u|: only its square root's recurrence.
+// No division by |u|: only its square root's recurrence (speed_coefficient, sliding_series.hpp).
 #pragma once
 
 #include <cmath>
@@ -26,11 +26,10 @@ template <typename Scalar>
 ApproachSeries<Scalar> approach_series(const Mat3<Scalar>& K, const Vec3<Scalar>& U_i, const Scalar& mu,
                                        const Scalar& x0, const Scalar& a0, const Scalar& b0, const Scalar& W0,
                                        const Scalar& u0_t, const Scalar& u0_z, int order) {
-  using std::sqrt;
   const std::size_t n = static_cast<std::size_t>(order) + 1;
   ApproachSeries<Scalar> s;
   for (auto* v : {&s.x, &s.a, &s.b, &s.W, &s.U_n, &s.u_t, &s.u_z}) v->assign(n, Scalar(0));
-  std::vector<Scalar> sq(n, Scalar(0)), r(n, Scalar(0));
+  std::vector<Scalar> r(n, Scalar(0));
   s.x[0] = x0, s.a[0] = a0, s.b[0] = b0, s.W[0] = W0;
   for (std::size_t j = 0; j < n; ++j) {
     for (int row = 0; row < 3; ++row) {
@@ -39,15 +38,7 @@ ApproachSeries<Scalar> approach_series(const Mat3<Scalar>& K, const Vec3<Scalar>
       (row == 0 ? s.U_n : row == 1 ? s.u_t : s.u_z)[j] = c;
     }
     if (j == 0) s.u_t[0] = u0_t, s.u_z[0] = u0_z;
-    // |u|^2 and |u| by Cauchy products: r_0 r_j twice plus the cross terms make sq_j.
-    for (std::size_t i = 0; i <= j; ++i) sq[j] += s.u_t[i] * s.u_t[j - i] + s.u_z[i] * s.u_z[j - i];
-    if (j == 0) {
-      r[0] = sqrt(sq[0]);
-    } else {
-      Scalar cross(0);
-      for (std::size_t i = 1; i < j; ++i) cross += r[i] * r[j - i];
-      r[j] = (sq[j] - cross) / (Scalar(2) * r[0]);
-    }
+    r[j] = speed_coefficient(s.u_t, s.u_z, r, j);
     if (j + 1 == n) break;
     const Scalar k(static_cast<long long>(j + 1));
     s.x[j + 1] = r[j] / k;

@@ -21,15 +21,28 @@ struct SlidingSeries {
   std::vector<Scalar> a, b, W, U_n, u_t, u_z;
 };
 
+// Coefficient j of |u| from u's coefficients 0..j and |u|'s 0..j-1: |u|^2 by a Cauchy product, whose
+// coefficient j is 2 r_0 r_j plus the cross terms. Both kinds of step (this file, approach_series.hpp).
+template <typename Scalar>
+Scalar speed_coefficient(const std::vector<Scalar>& u_t, const std::vector<Scalar>& u_z, const std::vector<Scalar>& r,
+                         std::size_t j) {
+  using std::sqrt;
+  Scalar sq(0);
+  for (std::size_t i = 0; i <= j; ++i) sq += u_t[i] * u_t[j - i] + u_z[i] * u_z[j - i];
+  if (j == 0) return sqrt(sq);
+  Scalar cross(0);
+  for (std::size_t i = 1; i < j; ++i) cross += r[i] * r[j - i];
+  return (sq - cross) / (Scalar(2) * r[0]);
+}
+
 // The series about (x0, a0, b0, W0) to `order`; u(x0) must not be zero.
 template <typename Scalar>
 SlidingSeries<Scalar> sliding_series(const Mat3<Scalar>& K, const Vec3<Scalar>& U_i, const Scalar& mu, const Scalar& x0,
                                      const Scalar& a0, const Scalar& b0, const Scalar& W0, int order) {
-  using std::sqrt;
   const std::size_t n = static_cast<std::size_t>(order) + 1;
   SlidingSeries<Scalar> s;
   for (auto* v : {&s.a, &s.b, &s.W, &s.U_n, &s.u_t, &s.u_z}) v->assign(n, Scalar(0));
-  std::vector<Scalar> sq(n, Scalar(0)), r(n, Scalar(0)), q_t(n, Scalar(0)), q_z(n, Scalar(0));
+  std::vector<Scalar> r(n, Scalar(0)), q_t(n, Scalar(0)), q_z(n, Scalar(0));
   s.a[0] = a0, s.b[0] = b0, s.W[0] = W0;
   for (std::size_t j = 0; j < n; ++j) {
     // U = U_i - K (x, a, b): its coefficient j from a_j, b_j and x's (x0, then 1, then 0).
@@ -39,16 +52,7 @@ SlidingSeries<Scalar> sliding_series(const Mat3<Scalar>& K, const Vec3<Scalar>& 
       if (j == 1) c -= K(row, 0);
       (row == 0 ? s.U_n : row == 1 ? s.u_t : s.u_z)[j] = c;
     }
-    Scalar acc(0);
-    for (std::size_t i = 0; i <= j; ++i) acc += s.u_t[i] * s.u_t[j - i] + s.u_z[i] * s.u_z[j - i];
-    sq[j] = acc;
-    if (j == 0) {
-      r[0] = sqrt(sq[0]);
-    } else {
-      Scalar cross(0);
-      for (std::size_t i = 1; i < j; ++i) cross += r[i] * r[j - i];
-      r[j] = (sq[j] - cross) / (Scalar(2) * r[0]);
-    }
+    r[j] = speed_coefficient(s.u_t, s.u_z, r, j);
     Scalar qt = s.u_t[j], qz = s.u_z[j];
     for (std::size_t i = 1; i <= j; ++i) qt -= r[i] * q_t[j - i], qz -= r[i] * q_z[j - i];
     q_t[j] = qt / r[0], q_z[j] = qz / r[0];
