@@ -42,7 +42,8 @@ class ScratchDir {
 
 std::string read_file(const fs::path& p) { return case_format::read_text_file(p.string()); }
 
-// The figures in reading order: the collision, the paper's views, then the sweeps.
+// The figures in reading order: the collision, the paper's views, Stronge's impact as it happens, then
+// the sweeps.
 std::vector<case_format::ReportFigure> figures_of(const case_format::CaseSpec& spec, const fs::path& dir) {
   std::vector<case_format::ReportFigure> out;
   const auto add = [&](const std::string& name, const std::string& caption) {
@@ -56,6 +57,11 @@ std::vector<case_format::ReportFigure> figures_of(const case_format::CaseSpec& s
   add("contact_plane", "Contact-plane view on the restitution plane (Figures 3-4, right)");
   add("impulse_space", "Impulse space (Figures 2-3, left)");
   for (std::size_t k = 0; k < n; ++k) add(fmt::format("solution_plane_{}", k + 1), "Solution plane of " + label[k] + " (Figures 4 right and 7)");
+  for (std::size_t k = 0; k < n; ++k) {
+    add(fmt::format("stronge_hodograph_{}", k + 1), "Hodograph of the sliding velocity through the impact, " + label[k]);
+    add(fmt::format("stronge_normal_{}", k + 1), "Normal velocity and normal work against the normal impulse, " + label[k]);
+    add(fmt::format("stronge_impulse_path_{}", k + 1), "Impulse path through the impact beside every strategy's impulse, " + label[k]);
+  }
   for (std::size_t k = 0; k < n; ++k) add(fmt::format("sweep_mu_{}", k + 1), "Sweep over the friction ratio from " + label[k]);
   for (std::size_t k = 0; k < n; ++k) add(fmt::format("sweep_eps_{}", k + 1), "Sweep over restitution, " + label[k]);
   return out;

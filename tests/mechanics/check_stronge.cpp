@@ -3,7 +3,9 @@
 // - the total turning of the sliding direction is at least its net turn;
 // - the kinetic energy the impact takes, from the end state, is the normal work (W_c - W_r) plus the
 //   friction's, which is never negative; under the energetic law W_r = e^2 W_c, so it never gains;
-// - solved as a strategy, the result is the integration's and its rounding bound holds the integration's.
+// - solved as a strategy, the result is the integration's and its rounding bound holds the integration's;
+// - the path the figures draw runs from the start to the end state in order of p, through every event,
+//   each of its points on eq 9's line V = V_ri - K P / m'.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -148,6 +150,49 @@ TEST_CASE("solved as a strategy: the integration's impulse, regime and bound",
     }
   }
   CHECK(checked == 150);
+}
+
+// Eq 9's residual at a point: 64 eps of |V_ri| + |K| |P| / m' for the product and sums; beside it, in
+// the slides followed in tau the tangential velocity is the steps' own (carried, not U_i - K P), which
+// may drift from the line by the integration's error, error_bound |V_ri|. The end state matches the
+// last point to 8 eps: one formula's operations in another order.
+TEST_CASE("the recorded path runs from the start to the end through every event, on eq 9's line", "[stronge]") {
+  std::mt19937_64 g(5905);
+  int checked = 0, points = 0, stopped = 0;
+  for (int n = 0; n < 100; ++n) {
+    const Draw d = draw_collision(g);
+    const RestitutionLaw law = kLaws[n % 3];
+    const auto h = stronge::integrate(d.p.K, d.p.m_prime, d.p.V_ri, d.mu, d.p.restitution, law, true);
+    REQUIRE(h.failure == nullptr);
+    REQUIRE(h.path.size() >= 2);
+    const double v0 = d.p.V_ri.norm(), p0 = d.p.m_prime * v0;
+    CHECK(h.path.front().P_C.norm() == 0);
+    CHECK((h.path.front().V_C - d.p.V_ri).norm() <= 2 * eps * v0);  // V_ri / v0 * v0
+    CHECK((h.path.back().P_C - h.P_C).norm() <= 8 * eps * h.P_C.norm());
+    CHECK((h.path.back().V_C - h.V_rf).norm() <= 8 * eps * v0);
+    bool ordered = true, on_line = true;
+    for (std::size_t i = 0; i < h.path.size(); ++i) {
+      const auto& q = h.path[i];
+      if (i) ordered = ordered && q.P_C.x() >= h.path[i - 1].P_C.x();
+      const V3 line = d.p.V_ri - d.p.K * q.P_C / d.p.m_prime;
+      const double tol = 64 * eps * (v0 + d.p.K.norm() * q.P_C.norm() / d.p.m_prime) + h.error_bound * v0;
+      on_line = on_line && (q.V_C - line).norm() <= tol;
+      ++points;
+    }
+    CHECK(ordered);
+    CHECK(on_line);
+    // Every event's p is a point of the path: the steps end there.
+    for (const auto& ev : h.events) {
+      bool found = false;
+      for (const auto& q : h.path) found = found || std::fabs(q.P_C.x() - ev.p) <= 8 * eps * p0;
+      CHECK(found);
+      stopped += ev.kind == stronge::EventKind::stick || ev.kind == stronge::EventKind::reversal;
+    }
+    ++checked;
+  }
+  CHECK(checked == 100);
+  CHECK(stopped > 0);
+  CHECK(points >= 100 * stronge::kPathPoints);
 }
 
 }  // namespace check_stronge

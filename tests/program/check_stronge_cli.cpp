@@ -3,7 +3,8 @@
 // the slip to the end, the end's p and relative velocity those of the impulse and of the post-impact
 // state; friction within Coulomb's cone; the regime `full` exactly when no final sliding direction is
 // written; the restitution law energetic when a case omits it; exact and certified arithmetic refuse it
-// with one line; the text report shows the events, the swerve and the normal work.
+// with one line; the text report shows the events, the swerve and the normal work; `plot` draws the
+// hodograph, V_n and the normal work against p and the impulse path from the numbers `solve` writes.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -31,6 +32,8 @@ fs::path scratch() {
 }
 
 double norm(const json& v) { return std::hypot(v[0].get<double>(), v[1].get<double>(), v[2].get<double>()); }
+
+std::string fmt_name(const char* stem, std::size_t k, const char* suffix) { return stem + std::to_string(k + 1) + suffix; }
 
 }  // namespace
 
@@ -122,6 +125,68 @@ TEST_CASE("the text report shows stronge's events, swerve and normal work") {
                            "swerve during the impact [deg]", "sliding direction at the end [deg]        - (sticks)",
                            "normal work: compression, restitution [J]", "integration: steps, error bound"})
     CHECK(run.out.find(line) != std::string::npos);
+}
+
+// The figures' numbers against `solve --format json` of the same case: both print doubles to 17 digits,
+// which read back exactly, from one computation; 4 eps of the value for a unit factor applied once more.
+// The path's last point is the end state by one formula's operations in another order: 8 eps of |V_ri|.
+TEST_CASE("plot draws stronge's hodograph, normal history and impulse path from solve's numbers", "[plot]") {
+  const std::string example = IMPACT3D_EXAMPLES_DIR "/stronge/fig8_through_the_impact.json";
+  const fs::path out = scratch() / "plot";
+  const Run plot = run_program(IMPACT3D_CLI, {"plot", example, "-o", out.string()});
+  REQUIRE(plot.status == 0);
+  CHECK(plot.err.empty());
+  const Run solved = run_program(IMPACT3D_CLI, {"solve", example, "--format", "json"});
+  REQUIRE(solved.status == 0);
+  const json results = json::parse(solved.out)["results"];
+  const auto near = [](double a, double b, double scale) { return std::fabs(a - b) <= 4 * kEps * scale; };
+  int drawn = 0;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const json& r = results[k];
+    const bool integrated = r["strategy"]["name"] == "stronge";
+    INFO("result " << k + 1);
+    for (const char* f : {"stronge_hodograph_", "stronge_normal_", "stronge_impulse_path_"}) {
+      const fs::path svg = out / (f + std::to_string(k + 1) + ".svg");
+      CHECK(fs::exists(svg) == integrated);
+      if (integrated) CHECK(slurp(svg).find("</svg>") != std::string::npos);
+    }
+    if (!integrated) continue;
+    const json& events = r["events"];
+    const auto rows = labelled_rows(slurp(out / fmt_name("stronge_normal_", k, ".events.csv")));
+    REQUIRE(rows.size() == events.size());
+    const double work = r["normal_work"]["compression"].get<double>();
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      CHECK(rows[i].first == events[i]["kind"].get<std::string>());
+      CHECK(near(rows[i].second[0], events[i]["p"].get<double>(), events.back()["p"].get<double>()));
+      CHECK(near(rows[i].second[1], events[i]["relative_velocity"][0].get<double>(), norm(events[0]["relative_velocity"])));
+      CHECK(near(rows[i].second[2], events[i]["normal_work"].get<double>(), work));
+    }
+    // The impulse path's points: the Full Impact, then every strategy's impulse (P_n, P_t, P_z), then the
+    // events on the path.
+    const auto pts = labelled_rows(slurp(out / fmt_name("stronge_impulse_path_", k, ".points.csv")));
+    REQUIRE(pts.size() == 1 + results.size() + events.size());
+    CHECK(pts[0].first == "Full Impact");
+    for (std::size_t m = 0; m < results.size(); ++m) {
+      const json& P = results[m]["impulse"]["contact"];
+      for (int j = 0; j < 3; ++j) CHECK(near(pts[1 + m].second[j], P[j].get<double>(), norm(P)));
+    }
+    CHECK(near(pts.back().second[0], r["impulse"]["contact"][0].get<double>(), norm(r["impulse"]["contact"])));
+    // The hodograph runs from the sliding velocity before to the one at the end.
+    const std::string dat = slurp(out / fmt_name("stronge_hodograph_", k, ".dat"));
+    const auto first = labelled_rows("V_t,V_z\nx," + dat.substr(0, dat.find('\n')));
+    std::string last_line = dat.substr(0, dat.find("\n\n"));
+    last_line = last_line.substr(last_line.rfind('\n') + 1);
+    const auto last = labelled_rows("V_t,V_z\nx," + last_line);
+    const double speed = norm(events[0]["relative_velocity"]);
+    const json& before = events.front()["relative_velocity"];
+    const json& end = events.back()["relative_velocity"];
+    CHECK(near(first[0].second[0], before[1].get<double>(), speed));
+    CHECK(near(first[0].second[1], before[2].get<double>(), speed));
+    CHECK(std::fabs(last[0].second[0] - end[1].get<double>()) <= 8 * kEps * speed);
+    CHECK(std::fabs(last[0].second[1] - end[2].get<double>()) <= 8 * kEps * speed);
+    ++drawn;
+  }
+  CHECK(drawn == 3);  // the example's three stronge strategies
 }
 
 }  // namespace check_stronge_cli

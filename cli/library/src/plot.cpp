@@ -23,6 +23,7 @@ std::string plot(const case_format::CaseSpec& spec, const PlotOptions& o) {
   impulse_space_view(c);
   sweeps(c);
   for (std::size_t k = 0; k < a.solutions.size(); ++k) collision_view(c, k);
+  for (std::size_t k = 0; k < a.solutions.size(); ++k) stronge_views(c, k);
   std::fputs(c.warnings.c_str(), stderr);
   return c.written;
 }

@@ -73,7 +73,7 @@ std::string series(const FigureContext& c, const std::string& verb, const std::s
 }
 
 std::string points_items(const FigureContext& c, const std::string& name, const std::string& header, const std::vector<Point>& pts,
-                         bool three_d, const Frame& frame) {
+                         bool three_d, const Frame& frame, const char* columns) {
   std::string csv = header + "\n";
   for (const auto& q : pts)
     csv += three_d ? fmt::format("{},{:.17g},{:.17g},{:.17g}\n", q.label, q.x, q.y, q.z)
@@ -93,7 +93,7 @@ std::string points_items(const FigureContext& c, const std::string& name, const 
     }
     const std::string title = under ? fmt::format("{} (= {})", pts[i].label, first) : pts[i].label;
     items += fmt::format(", \\\n     '{}.points.csv' every ::{}::{} using {} with points {} title {} noenhanced", name, i + 1, i + 1,
-                         three_d ? "2:3:4" : "2:3", pts[i].marker.style((kMarkerSize + kMarkerGrowth * under) * (c.o.png ? 1 : kSvgMarkerScale)), gnuplot_string(title));
+                         columns ? columns : three_d ? "2:3:4" : "2:3", pts[i].marker.style((kMarkerSize + kMarkerGrowth * under) * (c.o.png ? 1 : kSvgMarkerScale)), gnuplot_string(title));
   }
   return items;
 }

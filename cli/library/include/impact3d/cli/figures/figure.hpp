@@ -74,8 +74,10 @@ struct Frame {
 
 // The points of a figure: written to NAME.points.csv and drawn from it one plot item each, so that the
 // picture shows exactly the numbers in the file. A point within 1.2 % of the frame of earlier ones is
-// drawn larger, around them, and its key entry names the first of them: "(= Full Impact)".
+// drawn larger, around them, and its key entry names the first of them: "(= Full Impact)". `columns`
+// draws other columns of the file than all of them (2:3 or 2:3:4): one panel of points that coincide in
+// three dimensions.
 std::string points_items(const FigureContext& c, const std::string& name, const std::string& header, const std::vector<Point>& pts,
-                         bool three_d, const Frame& frame);
+                         bool three_d, const Frame& frame, const char* columns = nullptr);
 
 }  // namespace impact3d::cli

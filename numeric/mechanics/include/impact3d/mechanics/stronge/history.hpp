@@ -35,11 +35,23 @@ struct Event {
   Scalar normal_work;    // integral of V_n dp from the start [J]: positive while compressing
 };
 
+// A point on the way, for figures: the polynomials of each step (and the closed forms after sliding
+// stops) evaluated at kPathPoints points a step (four times as many through the closed form).
+template <typename Scalar>
+struct PathPoint {
+  Vec3<Scalar> P_C;      // impulse so far, contact axes [N s]; P_C(0) is p
+  Vec3<Scalar> V_C;      // relative velocity there [m/s]
+  Scalar normal_work;    // [J]
+};
+
+inline constexpr int kPathPoints = 8;
+
 template <typename Scalar>
 struct History {
   Vec3<Scalar> P_C;                 // the impulse on vehicle 1 at the end, contact axes
   Vec3<Scalar> V_rf;                // the relative velocity at the end, contact axes
   std::vector<Event<Scalar>> events;  // in order of p
+  std::vector<PathPoint<Scalar>> path;  // recorded with the events: from p = 0 to the end
   Scalar swerve_deg = Scalar(0);    // total turning of the sliding direction while it slides
   std::optional<Scalar> final_direction_deg;  // the sliding direction at the end (from t toward z), if sliding
   Scalar work_compression = Scalar(0);  // normal work of compression [J]

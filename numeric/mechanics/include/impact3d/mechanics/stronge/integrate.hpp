@@ -56,6 +56,19 @@ struct Follow {
 
   Vec3<Scalar> U() const { return U_i - K * Vec3<Scalar>(x, a, b); }
 
+  void trace(const Scalar& x_, const Scalar& a_, const Scalar& b_, const Scalar& W_, const Vec3<Scalar>& U_) {
+    if (record) h.path.push_back({Vec3<Scalar>(x_, a_, b_), U_, W_});
+  }
+  // The path through a step of length H at `points` points, at(h) giving x, a, b, W and U h into it.
+  template <typename At>
+  void trace_step(const Scalar& H, At at, int points = kPathPoints) {
+    if (!record || !(H > Scalar(0))) return;
+    for (int i = 1; i <= points; ++i) {
+      const auto q = at(Scalar(H * Scalar(i) / Scalar(points)));
+      trace(q[0], q[1], q[2], q[3], Vec3<Scalar>(q[4], q[5], q[6]));
+    }
+  }
+
   void event(EventKind kind, const Vec3<Scalar>& U_now) {
     if (record) h.events.push_back({kind, x, U_now, W});
   }
@@ -118,6 +131,10 @@ struct Follow {
     const Scalar s = -g(0);
     auto advance = [&](const Scalar& d) {
       const Scalar U_n = U()(0);
+      trace_step(d, [&](const Scalar& t) {
+        const Vec3<Scalar> U_t = U() + g * t;
+        return std::array<Scalar, 7>{x + t, a + f_t * t, b + f_z * t, W + U_n * t - s * t * t / Scalar(2), U_t(0), U_t(1), U_t(2)};
+      }, 4 * kPathPoints);  // one closed form over what may be most of the impact
       W += U_n * d - s * d * d / Scalar(2);
       x += d, a += f_t * d, b += f_z * d;
     };
@@ -226,6 +243,10 @@ struct Follow {
     for (std::size_t j = 0; j + 1 < n; ++j) Hn *= H;
     h.error_bound += last * Hn + eps * (Scalar(1) + x);
     ++h.steps;
+    trace_step(H, [&](const Scalar& t) {
+      return std::array<Scalar, 7>{polynomial_at(ser.x, t), polynomial_at(ser.a, t), polynomial_at(ser.b, t), polynomial_at(ser.W, t),
+                                   polynomial_at(ser.U_n, t), polynomial_at(ser.u_t, t), polynomial_at(ser.u_z, t)};
+    });
     x = polynomial_at(ser.x, H), a = polynomial_at(ser.a, H), b = polynomial_at(ser.b, H), W = polynomial_at(ser.W, H);
     const Vec3<Scalar> U_now = U();
     const Scalar ut = polynomial_at(ser.u_t, H), uz = polynomial_at(ser.u_z, H);
@@ -288,6 +309,10 @@ struct Follow {
     for (std::size_t j = 0; j + 1 < n; ++j) Hn *= H;
     h.error_bound += last * Hn + eps * (Scalar(1) + x);
     ++h.steps;
+    trace_step(H, [&](const Scalar& t) {
+      return std::array<Scalar, 7>{x + t, polynomial_at(ser.a, t), polynomial_at(ser.b, t), polynomial_at(ser.W, t),
+                                   polynomial_at(ser.U_n, t), polynomial_at(ser.u_t, t), polynomial_at(ser.u_z, t)};
+    });
     x += H, a = polynomial_at(ser.a, H), b = polynomial_at(ser.b, H), W = polynomial_at(ser.W, H);
     if (what == stop) {
       // The direction it arrived along: minus the velocity's derivative there.
@@ -321,6 +346,7 @@ struct Follow {
     using std::sqrt;
     const int order = taylor_order<Scalar>();
     const Scalar rho_i = sqrt(U_i(1) * U_i(1) + U_i(2) * U_i(2));
+    trace(x, a, b, W, U_i);
     if (rho_i <= Scalar(1024) * eps) {
       h.error_bound += rho_i;
       if (!from_rest(true)) return h;
@@ -358,6 +384,7 @@ History<Scalar> integrate(const Mat3<Scalar>& K, const Scalar& m_prime, const Ve
   h.relative_error = h.error_bound * p0 / h.P_C.norm();
   h.V_rf = f.U() * v0;
   for (auto& ev : h.events) ev.p *= p0, ev.V_C *= v0, ev.normal_work *= p0 * v0;
+  for (auto& q : h.path) q.P_C *= p0, q.V_C *= v0, q.normal_work *= p0 * v0;
   h.work_compression *= p0 * v0, h.work_restitution *= p0 * v0;
   return h;
 }
