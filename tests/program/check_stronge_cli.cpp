@@ -78,7 +78,9 @@ TEST_CASE("stronge's result: the contract's keys, its events, Coulomb's cone, th
     CHECK((r["regime"] == "full") == r["final_direction_deg"].is_null());
     CHECK(r["normal_work"]["compression"].get<double>() > 0);
     CHECK(r["normal_work"]["restitution"].get<double>() >= 0);
-    CHECK(r["integration"]["steps"].get<int>() > 0);
+    // At mu = 0.9 the slide comes to rest within reach of its invariant direction from the start: all of
+    // it in closed form (stop_series.hpp), no Taylor step; at 0.4 it slides throughout.
+    CHECK((r["integration"]["steps"].get<int>() > 0) == (k != 1));
     CHECK(r["integration"]["error_bound"].get<double>() < 1e-6);
     ++checked;
   }

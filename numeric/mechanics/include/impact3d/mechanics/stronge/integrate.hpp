@@ -1,10 +1,11 @@
 // Stronge's impact followed through the normal impulse p, from m', K and V_ri (eq 9), to the end that
 // the restitution law sets. The contact slides (a Taylor series step, sliding_series.hpp, of order
 // ceil(-ln eps / 2) + 1 and the step that makes its next term eps, Jorba and Zou's rule; below kApproach
-// of the approach speed in the regular variable tau, approach_series.hpp) until sliding stops; from then
-// on the impulse rate is constant (sticking, or sliding out along an invariant direction,
-// tangential_map.hpp) and every event is a closed form. Events inside a step are the roots of its
-// polynomials, bisected to the last bit.
+// of the approach speed or while the sliding speed falls, in the regular variable tau,
+// approach_series.hpp, and within reach of the invariant direction a stop settles on, the rest in closed
+// form, stop_series.hpp) until sliding stops; from then on the impulse rate is constant (sticking, or
+// sliding out along an invariant direction, tangential_map.hpp) and every event is a closed form.
+// Events inside a step are the roots of its polynomials, to the last bit.
 #pragma once
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include "impact3d/mechanics/stronge/history.hpp"
 #include "impact3d/mechanics/stronge/real_roots.hpp"
 #include "impact3d/mechanics/stronge/sliding_series.hpp"
+#include "impact3d/mechanics/stronge/stop_series.hpp"
 #include "impact3d/mechanics/stronge/tangential_map.hpp"
 
 namespace impact3d::stronge {
@@ -49,6 +51,7 @@ struct Follow {
   Scalar x_c{0}, W_c{0};
   std::optional<Scalar> c_prev, s_prev;  // the sliding direction at the last step's end
   std::optional<std::array<Scalar, 2>> u_carried;  // the sliding velocity, while followed in tau
+  std::optional<std::vector<Direction<Scalar>>> directions;  // the map's invariant directions, once needed
   History<Scalar> h;
 
   Follow(const Mat3<Scalar>& K_, const Vec3<Scalar>& U_i_, const Scalar& mu_, const Scalar& e_, RestitutionLaw law_, bool record_)
@@ -100,7 +103,7 @@ struct Follow {
       event(EventKind::stick, U());
       return true;
     }
-    const auto dirs = invariant_directions(map, mu);
+    const auto& dirs = invariant();
     std::optional<Direction<Scalar>> best;
     int outward = 0;
     for (const auto& d : dirs)
@@ -113,6 +116,64 @@ struct Follow {
     f_t = mu * best->c, f_z = mu * best->s;
     h.final_direction_deg = degrees(Scalar(atan2(best->s, best->c)));
     event(at_start ? EventKind::slip : EventKind::reversal, U());
+    return true;
+  }
+
+  const std::vector<Direction<Scalar>>& invariant() {
+    if (!directions) directions = invariant_directions(map, mu);
+    return *directions;
+  }
+
+  // Within reach of the invariant direction the slide settles on, the rest of the slide in closed form
+  // (stop_series.hpp), when no phase can end within it: true when taken, the contact then at rest.
+  bool stop_in_closed_form(int order) {
+    using std::abs;
+    using std::atan2;
+    using std::sqrt;
+    const Scalar ut = (*u_carried)[0], uz = (*u_carried)[1];
+    const Scalar rho = sqrt(ut * ut + uz * uz);
+    const Scalar c0 = ut / rho, s0 = uz / rho;
+    const Scalar f0 = map.turning(mu, c0, s0);
+    // The direction turns towards the first invariant direction ahead of it in f's sense; delta is the
+    // angle still to turn, negated (th0 - th*). Every direction is invariant when the list is empty.
+    const Scalar pi2 = Scalar(2) * pi<Scalar>();
+    Scalar c = c0, s = s0, delta(0);
+    if (!invariant().empty()) {
+      std::optional<Scalar> nearest;
+      for (const auto& d : invariant()) {
+        Scalar da = atan2(d.c * s0 - d.s * c0, d.c * c0 + d.s * s0);
+        if (f0 > Scalar(0) && da > Scalar(0)) da -= pi2;
+        if (f0 < Scalar(0) && da < Scalar(0)) da += pi2;
+        if (!nearest || abs(da) < abs(*nearest)) nearest = da, c = d.c, s = d.s;
+      }
+      delta = *nearest;
+    }
+    constexpr double kReach = 1;  // radians: farther, the series would need more terms than a step
+    if (!(abs(delta) <= Scalar(kReach))) return false;
+    // The rest is rho F: to eps of the impact's scale, F is needed to eps / rho.
+    const StopTail<Scalar> tail = stop_tail(K, map, mu, c, s, delta, Scalar(eps / std::min(Scalar(1), rho)), order);
+    if (!tail.converged) return false;
+    // No phase ends within the rest. On the way U_n = U_n(stop) + rho K_n . F(th) with rho falling from
+    // its value now, so U_n lies within rho (K_n . F_0 -+ variation) of U_n(stop); x only grows, and W
+    // only falls while U_n <= 0.
+    if (!tail.shrinking) return false;
+    const Vec3<Scalar> P_stop = Vec3<Scalar>(x, a, b) + tail.F * rho;
+    const Scalar U_n_stop = (U_i - K * P_stop)(0);
+    const Scalar dx = rho * tail.F(0);
+    const Scalar W_stop = W + U_n_stop * dx + rho * rho * tail.G;
+    const Scalar U_n_low = U_n_stop - rho * std::max(Scalar(0), Scalar(tail.normal_variation - tail.KnF0));
+    const Scalar U_n_high = U_n_stop + rho * std::max(Scalar(0), Scalar(tail.KnF0 + tail.normal_variation));
+    bool clear = false;
+    if (compressing) clear = U_n_low > Scalar(0);
+    else if (law == RestitutionLaw::energetic) clear = U_n_high <= Scalar(0) && end_value(P_stop(0), W_stop, U_n_stop) > Scalar(0);
+    else if (law == RestitutionLaw::poisson) clear = end_value(P_stop(0), W_stop, U_n_stop) > Scalar(0);
+    else clear = end_value(P_stop(0), W_stop, U_n_low) > Scalar(0);
+    if (!clear) return false;
+    x = P_stop(0), a = P_stop(1), b = P_stop(2), W = W_stop;
+    h.error_bound += rho * tail.last + eps * (Scalar(1) + x);
+    turn_to(c, s);
+    trace(x, a, b, W, U());
+    u_carried.reset(), c_prev.reset(), s_prev.reset();
     return true;
   }
 
@@ -230,11 +291,15 @@ struct Follow {
       const Vec3<Scalar> U_now = U();
       u_carried = {U_now(1), U_now(2)};
     }
+    if ((*u_carried)[0] != Scalar(0) || (*u_carried)[1] != Scalar(0))
+      if (stop_in_closed_form(order)) return false;
     const ApproachSeries<Scalar> ser = approach_series(K, U_i, mu, x, a, b, W, (*u_carried)[0], (*u_carried)[1], order);
     const std::size_t n = ser.x.size();
     const Scalar rho0 = sqrt(ser.u_t[0] * ser.u_t[0] + ser.u_z[0] * ser.u_z[0]);
     if (!(rho0 > Scalar(0))) return u_carried.reset(), c_prev.reset(), s_prev.reset(), false;  // at rest already
-    Scalar H(step_size(ser.u_t, ser.u_z, rho0, 1e6));
+    // u to eps of itself (the carried direction), the impulse and the work to eps of the impact's scale:
+    // W's terms carry rho^2, whose series grows twice as fast.
+    Scalar H(std::min({step_size(ser.u_t, ser.u_z, rho0, 1e6), step_size(ser.x, ser.W, Scalar(1), 1e6), step_size(ser.a, ser.b, Scalar(1), 1e6)}));
     bool ends = false;
     if (const auto root = first_root(ending_polynomial(ser.x, ser.W, ser.U_n), H)) H = *root, ends = true;
     Scalar last(0);
@@ -274,7 +339,14 @@ struct Follow {
     {
       const Vec3<Scalar> U_now = U();
       const Scalar ut = u_carried ? (*u_carried)[0] : U_now(1), uz = u_carried ? (*u_carried)[1] : U_now(2);
-      if (ut * ut + uz * uz <= Scalar(kApproach * kApproach)) return approach_step(order);
+      // In tau below kApproach, and wherever the slide shrinks: its steps in x only approach a stop
+      // geometrically (their radius is the distance to it), those in tau an e-fold at a time.
+      const Scalar rho2 = ut * ut + uz * uz;
+      if (rho2 <= Scalar(kApproach * kApproach)) return approach_step(order);
+      if (rho2 > Scalar(0)) {
+        const Scalar rho = sqrt(rho2);
+        if (map.growth(mu, Scalar(ut / rho), Scalar(uz / rho)) < Scalar(0)) return approach_step(order);
+      }
       u_carried.reset();
     }
     const SlidingSeries<Scalar> ser = sliding_series(K, U_i, mu, x, a, b, W, order);

@@ -21,21 +21,31 @@ Scalar polynomial_at(const std::vector<Scalar>& c, const Scalar& x) {
   return y;
 }
 
-// The root of c in [lo, hi], where c(lo) and c(hi) differ in sign, to the last bit the bisection can
-// split (at most `kBisections` halvings: 128 more than the widest scalar's bits).
+// The root of c in [lo, hi], where c(lo) and c(hi) differ in sign, to the last bit: Newton's steps kept
+// inside the bracket that each value shrinks, a bisection wherever a step would leave it or fall short of
+// halving the step before (Numerical Recipes' rtsafe), until the bracket cannot be split or the step is
+// below the last bit; at most `kIterations` (128 more than the widest scalar's bits).
 template <typename Scalar>
 Scalar bisect_bracket(const std::vector<Scalar>& c, Scalar lo, Scalar hi) {
-  constexpr int kBisections = 128 + 400;
+  using std::abs;
+  constexpr int kIterations = 128 + 400;
   const bool lo_negative = polynomial_at(c, lo) < Scalar(0);
-  for (int i = 0; i < kBisections; ++i) {
-    const Scalar mid = (lo + hi) / Scalar(2);
-    if (!(mid > lo && mid < hi)) break;
-    const Scalar y = polynomial_at(c, mid);
-    if (y == Scalar(0)) return mid;
-    if ((y < Scalar(0)) == lo_negative) lo = mid;
-    else hi = mid;
+  Scalar x = (lo + hi) / Scalar(2), step_before = hi - lo, step = step_before;
+  for (int i = 0; i < kIterations; ++i) {
+    Scalar y(0), d(0);
+    for (std::size_t k = c.size(); k-- > 0;) d = d * x + y, y = y * x + c[k];
+    if (y == Scalar(0)) return x;
+    if ((y < Scalar(0)) == lo_negative) lo = x;
+    else hi = x;
+    Scalar next = x;
+    const bool newton = d != Scalar(0) && abs(Scalar(Scalar(2) * y)) < abs(Scalar(step_before * d));
+    if (newton) next = x - y / d;
+    if (!newton || !(next > lo && next < hi)) next = (lo + hi) / Scalar(2);
+    if (!(next > lo && next < hi) || next == x) break;  // the bracket is two neighbours
+    step_before = step, step = abs(Scalar(next - x));
+    x = next;
   }
-  return (lo + hi) / Scalar(2);
+  return x;
 }
 
 // One Newton step from a root found to the last bit: its value unchanged, and for a dual number the

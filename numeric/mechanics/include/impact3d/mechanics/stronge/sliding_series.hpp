@@ -27,12 +27,13 @@ template <typename Scalar>
 Scalar speed_coefficient(const std::vector<Scalar>& u_t, const std::vector<Scalar>& u_z, const std::vector<Scalar>& r,
                          std::size_t j) {
   using std::sqrt;
-  Scalar sq(0);
-  for (std::size_t i = 0; i <= j; ++i) sq += u_t[i] * u_t[j - i] + u_z[i] * u_z[j - i];
-  if (j == 0) return sqrt(sq);
-  Scalar cross(0);
-  for (std::size_t i = 1; i < j; ++i) cross += r[i] * r[j - i];
-  return (sq - cross) / (Scalar(2) * r[0]);
+  if (j == 0) return sqrt(u_t[0] * u_t[0] + u_z[0] * u_z[0]);
+  // Both sums are symmetric in i <-> j - i: each pair once, doubled, and the middle term of an even j.
+  Scalar sq(0), cross(0);
+  for (std::size_t i = 1; 2 * i < j; ++i) sq += u_t[i] * u_t[j - i] + u_z[i] * u_z[j - i], cross += r[i] * r[j - i];
+  sq = Scalar(2) * (sq - cross + u_t[0] * u_t[j] + u_z[0] * u_z[j]);
+  if (j % 2 == 0) sq += u_t[j / 2] * u_t[j / 2] + u_z[j / 2] * u_z[j / 2] - r[j / 2] * r[j / 2];
+  return sq / (Scalar(2) * r[0]);
 }
 
 // The series about (x0, a0, b0, W0) to `order`; u(x0) must not be zero.
