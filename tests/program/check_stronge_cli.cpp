@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "cli_process.hpp"
@@ -189,6 +190,47 @@ TEST_CASE("plot draws stronge's hodograph, normal history and impulse path from 
     ++drawn;
   }
   CHECK(drawn == 3);  // the example's three stronge strategies
+}
+
+// batch's scalar path for stronge: every row's results are solve's for the same case and strategies,
+// to the last digit (one computation, one writer), on two threads.
+TEST_CASE("batch integrates stronge as solve does, row by row", "[batch]") {
+  json c = json::parse(slurp(kCase));
+  std::string lines;
+  for (const double speed : {11.176, 13.4112, 8.9408}) {
+    c["vehicles"][0]["velocity"][0] = speed;
+    lines += c.dump() + "\n";
+  }
+  const fs::path rows = scratch() / "stronge_rows.jsonl";
+  std::ofstream(rows) << lines;
+  const std::vector<std::string> strategies{"--strategy", "stronge:mu=0.4", "--strategy", "stronge:mu=0.9,restitution=newton"};
+  std::vector<std::string> args{"batch", rows.string(), "--jobs", "2"};
+  args.insert(args.end(), strategies.begin(), strategies.end());
+  const Run batch = run_program(IMPACT3D_CLI, args);
+  REQUIRE(batch.status == 0);
+  std::istringstream out(batch.out);
+  std::string line;
+  int checked = 0;
+  for (const double speed : {11.176, 13.4112, 8.9408}) {
+    REQUIRE(std::getline(out, line));
+    c["vehicles"][0]["velocity"][0] = speed;
+    const fs::path one = scratch() / "stronge_row.json";
+    std::ofstream(one) << c.dump();
+    std::vector<std::string> solve_args{"solve", one.string(), "--format", "json"};
+    solve_args.insert(solve_args.end(), strategies.begin(), strategies.end());
+    const Run solved = run_program(IMPACT3D_CLI, solve_args);
+    REQUIRE(solved.status == 0);
+    const json a = json::parse(line)["results"], b = json::parse(solved.out)["results"];
+    REQUIRE(a.size() == 2);
+    for (std::size_t k = 0; k < 2; ++k) {
+      CHECK(a[k]["impulse"] == b[k]["impulse"]);
+      CHECK(a[k]["events"] == b[k]["events"]);
+      CHECK(a[k]["swerve_deg"] == b[k]["swerve_deg"]);
+      CHECK(a[k]["integration"] == b[k]["integration"]);
+      ++checked;
+    }
+  }
+  CHECK(checked == 6);
 }
 
 }  // namespace check_stronge_cli

@@ -13,9 +13,9 @@
 namespace impact3d::cli {
 namespace {
 
-// One glyph per kind of event (history.hpp's order), none of them a strategy's.
+// One filled glyph per kind of event (history.hpp's order), in dark colours no strategy uses.
 const Marker& event_marker(stronge::EventKind k) {
-  static const Marker markers[] = {{9, "#000000"}, {7, "#009e73"}, {5, "#d55e00"}, {13, "#0072b2"}, {11, "#cc79a7"}};
+  static const Marker markers[] = {{9, "#000000"}, {7, "#006400"}, {5, "#8b0000"}, {13, "#000080"}, {11, "#6a0dad"}};
   return markers[static_cast<int>(k)];
 }
 
@@ -119,7 +119,7 @@ void normal_history(FigureContext& c, std::size_t k, const stronge::History<doub
                     {fmt::format("work of compression {} {}, released in restitution {} {}", four(h.work_compression / fe),
                                  c.energy_unit, four(h.work_restitution / fe), c.energy_unit)}));
   const auto [p0, p1] = p.padded(p.hi);
-  gp += fmt::format("set xrange [{:.17g}:{:.17g}]\nset xlabel {}\nset xzeroaxis lt -1 lw 1\n", std::max(0.0, p0), p1,
+  gp += fmt::format("set xrange [{:.17g}:{:.17g}]\nset xlabel {}\nset xzeroaxis lt -1 lw 1\n", std::min(0.0, p0), p1,
                     gnuplot_string("normal impulse p [" + c.imp_unit + "]"));
   gp += event_lines(h.events, fi);
   const auto [v0, v1] = v.padded(v.hi - v.lo);
@@ -161,7 +161,7 @@ void impulse_path(FigureContext& c, std::size_t k, const stronge::History<double
   p.add(0), q[0].add(0), q[1].add(0);
   const std::string name = fmt::format("stronge_impulse_path_{}", k + 1);
   const std::string what = "impulse path through the impact, beside every strategy's impulse: " + label;
-  std::string gp = figure_head(c, what, 1600, 650);
+  std::string gp = figure_head(c, what, 1700, 650);
   // Two panels and the key to their right, clear of both.
   gp += fmt::format("unset title\nset multiplot title {} noenhanced\n", title_lines(c, what));
   const auto [p0, p1] = p.padded(p.hi);
@@ -172,8 +172,8 @@ void impulse_path(FigureContext& c, std::size_t k, const stronge::History<double
   const Frame frame{p0, p1, t0, t1, z0, z1};
   const char* axis[2] = {"P_t", "P_z"};
   for (int j = 0; j < 2; ++j) {
-    gp += fmt::format("set origin {},0\nset size 0.32,0.9\nset key {}\nset ylabel {}\nset yrange [{:.17g}:{:.17g}]\n", j ? "0.32" : "0",
-                      j ? "at screen 0.655, screen 0.86 left top vertical Left reverse noenhanced font ',10'" : "off",
+    gp += fmt::format("set origin {},0\nset size 0.3,0.9\nset key {}\nset ylabel {}\nset yrange [{:.17g}:{:.17g}]\n", j ? "0.3" : "0",
+                      j ? "at screen 0.615, screen 0.86 left top vertical Left reverse noenhanced font ',10'" : "off",
                       gnuplot_string(std::string(axis[j]) + " [" + c.imp_unit + "]"), j ? z0 : t0, j ? z1 : t1);
     gp += series(c, "plot", fmt::format("{}_{}", name, axis[j][2]), {{"lw 2 lc rgb '#333333'", "the integrated path", along[j]}});
     gp += points_items(c, name, "label,P_n,P_t,P_z", pts, true, frame, j ? "2:4" : "2:3") + "\n";

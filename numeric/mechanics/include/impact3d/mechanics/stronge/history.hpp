@@ -36,7 +36,8 @@ struct Event {
 };
 
 // A point on the way, for figures: the polynomials of each step (and the closed forms after sliding
-// stops) evaluated at kPathPoints points a step (four times as many through the closed form).
+// stops) evaluated at kPathPoints points a step (four times as many through the closed form), and the
+// closed-form rest of a slide at 32 points (at double and long double, which the figures draw; else its end).
 template <typename Scalar>
 struct PathPoint {
   Vec3<Scalar> P_C;      // impulse so far, contact axes [N s]; P_C(0) is p

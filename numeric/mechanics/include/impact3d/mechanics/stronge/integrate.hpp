@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <type_traits>
 
 #include "impact3d/mechanics/stronge/approach_series.hpp"
 #include "impact3d/mechanics/stronge/history.hpp"
@@ -129,6 +130,8 @@ struct Follow {
   bool stop_in_closed_form(int order) {
     using std::abs;
     using std::atan2;
+    using std::cos;
+    using std::sin;
     using std::sqrt;
     const Scalar ut = (*u_carried)[0], uz = (*u_carried)[1];
     const Scalar rho = sqrt(ut * ut + uz * uz);
@@ -142,8 +145,11 @@ struct Follow {
       std::optional<Scalar> nearest;
       for (const auto& d : invariant()) {
         Scalar da = atan2(d.c * s0 - d.s * c0, d.c * c0 + d.s * s0);
-        if (f0 > Scalar(0) && da > Scalar(0)) da -= pi2;
-        if (f0 < Scalar(0) && da < Scalar(0)) da += pi2;
+        // Within rounding of a direction f0's sign is noise: that direction, whichever side.
+        if (abs(da) > Scalar(64) * eps) {
+          if (f0 > Scalar(0) && da > Scalar(0)) da -= pi2;
+          if (f0 < Scalar(0) && da < Scalar(0)) da += pi2;
+        }
         if (!nearest || abs(da) < abs(*nearest)) nearest = da, c = d.c, s = d.s;
       }
       delta = *nearest;
@@ -151,7 +157,7 @@ struct Follow {
     constexpr double kReach = 1;  // radians: farther, the series would need more terms than a step
     if (!(abs(delta) <= Scalar(kReach))) return false;
     // The rest is rho F: to eps of the impact's scale, F is needed to eps / rho.
-    const StopTail<Scalar> tail = stop_tail(K, map, mu, c, s, delta, Scalar(eps / std::min(Scalar(1), rho)), order);
+    const StopTail<Scalar> tail = stop_tail(K, map, mu, c, s, delta, Scalar(eps / rho), order);
     if (!tail.converged) return false;
     // No phase ends within the rest. On the way U_n = U_n(stop) + rho K_n . F(th) with rho falling from
     // its value now, so U_n lies within rho (K_n . F_0 -+ variation) of U_n(stop); x only grows, and W
@@ -169,8 +175,27 @@ struct Follow {
     else if (law == RestitutionLaw::poisson) clear = end_value(P_stop(0), W_stop, U_n_stop) > Scalar(0);
     else clear = end_value(P_stop(0), W_stop, U_n_low) > Scalar(0);
     if (!clear) return false;
+    // The path on the way, from the closed form: at angles delta (1 - i / k) (by rho when the direction
+    // does not turn); at the hardware precisions, which the figures draw (100 digits has no exp).
+    if constexpr (std::is_floating_point_v<Scalar>) if (record) {
+      constexpr int kPoints = 4 * kPathPoints;  // one closed form over what may be the whole slide
+      for (int i = 1; i < kPoints; ++i) {
+        const Scalar w = Scalar(1) - Scalar(i) / Scalar(kPoints);
+        Scalar r = rho * w, G_i = tail.G;
+        Vec3<Scalar> F_i = tail.F;
+        Scalar th = atan2(s, c);
+        if (delta != Scalar(0) && tail.f_n[1] < Scalar(0)) {
+          const auto q = rest_at(tail, delta, Scalar(delta * w));
+          r = rho * q[0], F_i = Vec3<Scalar>(q[1], q[2], q[3]), G_i = q[4], th += delta * w;
+        }
+        const Vec3<Scalar> P_i = P_stop - F_i * r;
+        const Scalar U_n_i = (U_i - K * P_i)(0);
+        const Scalar W_i = W_stop - U_n_stop * r * F_i(0) - r * r * G_i;
+        trace(P_i(0), P_i(1), P_i(2), W_i, Vec3<Scalar>(U_n_i, Scalar(r * cos(th)), Scalar(r * sin(th))));
+      }
+    }
     x = P_stop(0), a = P_stop(1), b = P_stop(2), W = W_stop;
-    h.error_bound += rho * tail.last + eps * (Scalar(1) + x);
+    h.error_bound += std::max(rho, Scalar(rho * rho)) * tail.last + eps * (Scalar(1) + x);  // rho F, rho^2 G
     turn_to(c, s);
     trace(x, a, b, W, U());
     u_carried.reset(), c_prev.reset(), s_prev.reset();
@@ -281,7 +306,7 @@ struct Follow {
     return finish_sliding(U_now), false;
   }
 
-  // One step of a slide slower than kApproach of the approach speed, in tau (approach_series.hpp), to
+  // One step of a slide slower than kApproach of the approach speed or slowing, in tau (approach_series.hpp), to
   // sliding at 16 eps of it, where the contact is taken to stop: the slide that skips is at most
   // 16 eps over the growth, added to the bound with the steps' truncation.
   bool approach_step(int order) {

@@ -23,8 +23,8 @@ Scalar polynomial_at(const std::vector<Scalar>& c, const Scalar& x) {
 
 // The root of c in [lo, hi], where c(lo) and c(hi) differ in sign, to the last bit: Newton's steps kept
 // inside the bracket that each value shrinks, a bisection wherever a step would leave it or fall short of
-// halving the step before (Numerical Recipes' rtsafe), until the bracket cannot be split or the step is
-// below the last bit; at most `kIterations` (128 more than the widest scalar's bits).
+// halving the step before (Numerical Recipes' rtsafe), until the bracket cannot be split or Newton's step
+// is below the last bit; at most `kIterations` (128 more than the widest scalar's bits).
 template <typename Scalar>
 Scalar bisect_bracket(const std::vector<Scalar>& c, Scalar lo, Scalar hi) {
   using std::abs;
@@ -39,7 +39,11 @@ Scalar bisect_bracket(const std::vector<Scalar>& c, Scalar lo, Scalar hi) {
     else hi = x;
     Scalar next = x;
     const bool newton = d != Scalar(0) && abs(Scalar(Scalar(2) * y)) < abs(Scalar(step_before * d));
-    if (newton) next = x - y / d;
+    if (newton) {
+      next = x - y / d;
+      // A step below the last bit: Newton has converged (from one side, which bisection would close).
+      if (abs(Scalar(next - x)) <= std::numeric_limits<Scalar>::epsilon() * abs(x)) return next > lo && next < hi ? next : x;
+    }
     if (!newton || !(next > lo && next < hi)) next = (lo + hi) / Scalar(2);
     if (!(next > lo && next < hi) || next == x) break;  // the bracket is two neighbours
     step_before = step, step = abs(Scalar(next - x));

@@ -34,7 +34,39 @@ struct StopTail {
   Scalar KnF0, normal_variation;
   bool shrinking = false;
   bool converged = false;
+  // The coefficients used, and f's and g's, for the path on the way (rest_at).
+  std::vector<std::array<Scalar, 3>> F_n;
+  std::vector<Scalar> G_n, f_n, g_n;
 };
+
+// On the way: at the angle delta_i between delta and 0, rho_i / rho (rho falls as the direction
+// turns: d ln rho / d delta = g / f = h(delta) / delta, h = g / (f / delta) analytic, so
+// ln(rho_i / rho) = h_0 ln(delta_i / delta) + sum_{n>=1} h_n (delta_i^n - delta^n) / n) and the rest
+// from there, F(delta_i) and G(delta_i). Only for a converged tail with delta != 0.
+template <typename Scalar>
+std::array<Scalar, 5> rest_at(const StopTail<Scalar>& t, const Scalar& delta, const Scalar& delta_i) {
+  using std::exp;
+  using std::log;
+  const std::size_t N = t.F_n.size();
+  std::vector<Scalar> hs(N);
+  for (std::size_t n = 0; n < N; ++n) {
+    Scalar r = t.g_n[n];
+    for (std::size_t j = 1; j <= n; ++j) r -= t.f_n[j + 1] * hs[n - j];
+    hs[n] = r / t.f_n[1];
+  }
+  Scalar ln_ratio = hs[0] * log(Scalar(delta_i / delta)), p_i(1), p(1);
+  Vec3<Scalar> F = Vec3<Scalar>::Zero();
+  Scalar G(0);
+  for (std::size_t n = 0; n < N; ++n) {
+    if (n) {
+      p_i *= delta_i, p *= delta;
+      ln_ratio += hs[n] * (p_i - p) / Scalar(static_cast<long long>(n));
+    }
+    F += Vec3<Scalar>(t.F_n[n][0], t.F_n[n][1], t.F_n[n][2]) * p_i;
+    G += t.G_n[n] * p_i;
+  }
+  return {Scalar(exp(ln_ratio)), F(0), F(1), F(2), G};
+}
 
 // The tail at delta from the direction (c, s) = th*, to the first order whose last two terms are
 // `tolerance` of the sum, at most `max_order`; not converged when the terms do not fall that far.
@@ -90,12 +122,14 @@ StopTail<Scalar> stop_tail(const Mat3<Scalar>& K, const TangentialMap<Scalar>& m
     const Scalar term_G = G[n] * power;
     sumF += term, sumG += term_G;
     const Scalar size = std::max(Scalar(term.cwiseAbs().maxCoeff()), Scalar(abs(term_G)));
-    if (delta == Scalar(0) || (n >= 1 && std::max(size, previous) <= tolerance * std::max(Scalar(sumF.cwiseAbs().maxCoeff()), Scalar(abs(sumG))))) {
-      // At delta = 0 the first term is the whole sum (a straight slide to rest).
+    // At delta = 0 the first term is the whole value; a dual's derivative needs the second as well.
+    if ((delta == Scalar(0) && n >= (is_dual_v<Scalar> ? 1u : 0u)) || (n >= 1 && std::max(size, previous) <= tolerance * std::max(Scalar(sumF.cwiseAbs().maxCoeff()), Scalar(abs(sumG))))) {
       out.F = sumF, out.G = sumG, out.last = delta == Scalar(0) ? Scalar(0) : std::max(size, previous), out.converged = true;
       out.KnF0 = K(0, 0) * F[0][0] + K(0, 1) * F[0][1] + K(0, 2) * F[0][2];
       out.normal_variation = variation;
       out.shrinking = g_variation < -g[0];
+      F.resize(n + 1), G.resize(n + 1);
+      out.F_n = std::move(F), out.G_n = std::move(G), out.f_n = std::move(f), out.g_n = std::move(g);
       return out;
     }
     if (n >= 4 && size > previous) return out;  // the terms grow: delta is past the series' reach
