@@ -52,3 +52,21 @@ def test_a_case_as_a_dict_is_the_file(fig8):
     case = impact3d.read_case(fig8)
     assert case.name.startswith("Figure 8") and case.source == str(fig8)
     assert impact3d.solve(case) == impact3d.solve(fig8)
+
+
+@pytest.mark.parametrize("precision", ["double", "50", "100"])
+def test_stronge_equals_the_cli(precision):
+    """Stronge's integration through the package: the example that integrates it, its events, swerve and
+    normal work included, the CLI's document field by field."""
+    case = SOURCE / "examples" / "stronge" / "fig8_through_the_impact.json"
+    ours = impact3d.solve(case, precision=precision)
+    theirs = cli_document(cli("solve", case, "--format", "json", "--precision", precision), precision)
+    assert ours == theirs
+    integrated = [r for r in ours["results"] if r["strategy"]["name"] == "stronge"]
+    assert len(integrated) == 3
+    assert all(r["events"][0]["kind"] == "slip" and r["events"][-1]["kind"] == "end" for r in integrated)
+
+
+def test_exact_arithmetic_refuses_stronge(fig8):
+    with pytest.raises(impact3d.CaseError, match="stronge has no exact or certified form"):
+        impact3d.solve(fig8, strategies=["stronge:mu=0.4"], precision="exact")
