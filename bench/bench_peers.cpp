@@ -66,14 +66,19 @@ void pc_crash_lean(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
 }
 
-// At 100 digits (MPFR, numbers in the object rather than on the heap): the first 64 collisions, their
-// raw parameters the same decimals (a double converts exactly).
+// The first n collisions at 100 digits, their raw parameters the same decimals (a double converts exactly).
+std::vector<RawCollision<mp::float100>> raw_100(std::size_t n) {
+  std::vector<RawCollision<mp::float100>> raw;
+  for (std::size_t k = 0; k < n; ++k) raw.push_back(bench::raw_as<mp::float100>(raw_cases()[k]));
+  return raw;
+}
+
+// At 100 digits (MPFR, numbers in the object rather than on the heap): the first 64 collisions.
 template <bool Lean>
 void pc_crash_100(benchmark::State& state) {
   using F = mp::float100;
   const auto& cs = cases();
-  std::vector<RawCollision<F>> raw;
-  for (std::size_t k = 0; k < 64; ++k) raw.push_back(bench::raw_as<F>(raw_cases()[k]));
+  const std::vector<RawCollision<F>> raw = raw_100(64);
   for (auto _ : state)
     for (std::size_t k = 0; k < raw.size(); ++k) {
       if constexpr (Lean)
@@ -86,9 +91,7 @@ void pc_crash_100(benchmark::State& state) {
 
 // Of which the raw parameters to a scene (nine sines and cosines, and the rotations).
 void scene_of_100(benchmark::State& state) {
-  using F = mp::float100;
-  std::vector<RawCollision<F>> raw;
-  for (std::size_t k = 0; k < 64; ++k) raw.push_back(bench::raw_as<F>(raw_cases()[k]));
+  const std::vector<RawCollision<mp::float100>> raw = raw_100(64);
   for (auto _ : state)
     for (const auto& r : raw) benchmark::DoNotOptimize(scene_of(r));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * raw.size()));
@@ -200,8 +203,7 @@ void stronge_lean(benchmark::State& state) {
 void stronge_lean_100(benchmark::State& state) {
   using F = mp::float100;
   const auto& cs = cases();
-  std::vector<RawCollision<F>> raw;
-  for (std::size_t k = 0; k < 16; ++k) raw.push_back(bench::raw_as<F>(raw_cases()[k]));
+  const std::vector<RawCollision<F>> raw = raw_100(16);
   for (auto _ : state)
     for (std::size_t k = 0; k < raw.size(); ++k)
       benchmark::DoNotOptimize(solve_lean(raw[k], Strategy<F>(Stronge<F>{F(cs[k].mu)}), Want::impulse, Engine::generated));

@@ -179,13 +179,15 @@ struct Follow {
     // does not turn); at the hardware precisions, which the figures draw (100 digits has no exp).
     if constexpr (std::is_floating_point_v<Scalar>) if (record) {
       constexpr int kPoints = 4 * kPathPoints;  // one closed form over what may be the whole slide
+      const bool turns = delta != Scalar(0) && tail.f_n[1] < Scalar(0);
+      const std::vector<Scalar> hs = turns ? radius_series(tail) : std::vector<Scalar>{};
       for (int i = 1; i < kPoints; ++i) {
         const Scalar w = Scalar(1) - Scalar(i) / Scalar(kPoints);
         Scalar r = rho * w, G_i = tail.G;
         Vec3<Scalar> F_i = tail.F;
         Scalar th = atan2(s, c);
-        if (delta != Scalar(0) && tail.f_n[1] < Scalar(0)) {
-          const auto q = rest_at(tail, delta, Scalar(delta * w));
+        if (turns) {
+          const auto q = rest_at(tail, hs, delta, Scalar(delta * w));
           r = rho * q[0], F_i = Vec3<Scalar>(q[1], q[2], q[3]), G_i = q[4], th += delta * w;
         }
         const Vec3<Scalar> P_i = P_stop - F_i * r;
@@ -366,12 +368,8 @@ struct Follow {
       const Scalar ut = u_carried ? (*u_carried)[0] : U_now(1), uz = u_carried ? (*u_carried)[1] : U_now(2);
       // In tau below kApproach, and wherever the slide shrinks: its steps in x only approach a stop
       // geometrically (their radius is the distance to it), those in tau an e-fold at a time.
-      const Scalar rho2 = ut * ut + uz * uz;
-      if (rho2 <= Scalar(kApproach * kApproach)) return approach_step(order);
-      if (rho2 > Scalar(0)) {
-        const Scalar rho = sqrt(rho2);
-        if (map.growth(mu, Scalar(ut / rho), Scalar(uz / rho)) < Scalar(0)) return approach_step(order);
-      }
+      const Scalar rho = sqrt(ut * ut + uz * uz);
+      if (rho <= Scalar(kApproach) || map.growth(mu, Scalar(ut / rho), Scalar(uz / rho)) < Scalar(0)) return approach_step(order);
       u_carried.reset();
     }
     const SlidingSeries<Scalar> ser = sliding_series(K, U_i, mu, x, a, b, W, order);

@@ -42,11 +42,11 @@ struct StopTail {
 // On the way: at the angle delta_i between delta and 0, rho_i / rho (rho falls as the direction
 // turns: d ln rho / d delta = g / f = h(delta) / delta, h = g / (f / delta) analytic, so
 // ln(rho_i / rho) = h_0 ln(delta_i / delta) + sum_{n>=1} h_n (delta_i^n - delta^n) / n) and the rest
-// from there, F(delta_i) and G(delta_i). Only for a converged tail with delta != 0.
+// from there, F(delta_i) and G(delta_i), hs = radius_series(t). Only for a converged tail with delta != 0
+// and f_1 < 0.
+// h's coefficients, once for every rest_at of a tail.
 template <typename Scalar>
-std::array<Scalar, 5> rest_at(const StopTail<Scalar>& t, const Scalar& delta, const Scalar& delta_i) {
-  using std::exp;
-  using std::log;
+std::vector<Scalar> radius_series(const StopTail<Scalar>& t) {
   const std::size_t N = t.F_n.size();
   std::vector<Scalar> hs(N);
   for (std::size_t n = 0; n < N; ++n) {
@@ -54,6 +54,15 @@ std::array<Scalar, 5> rest_at(const StopTail<Scalar>& t, const Scalar& delta, co
     for (std::size_t j = 1; j <= n; ++j) r -= t.f_n[j + 1] * hs[n - j];
     hs[n] = r / t.f_n[1];
   }
+  return hs;
+}
+
+template <typename Scalar>
+std::array<Scalar, 5> rest_at(const StopTail<Scalar>& t, const std::vector<Scalar>& hs, const Scalar& delta,
+                              const Scalar& delta_i) {
+  using std::exp;
+  using std::log;
+  const std::size_t N = t.F_n.size();
   Scalar ln_ratio = hs[0] * log(Scalar(delta_i / delta)), p_i(1), p(1);
   Vec3<Scalar> F = Vec3<Scalar>::Zero();
   Scalar G(0);
