@@ -1,6 +1,7 @@
 #include "kernels.hpp"
 
 #include "paper.hpp"
+#include "stronge_forms.hpp"
 
 namespace impact3d::symbolic {
 
@@ -243,9 +244,56 @@ Kernel energy_change(const ClosedForms& c) {
   return k;
 }
 
+const KernelArg kMu{"const Scalar& mu", "Coulomb friction coefficient"};
+
+// A Stronge kernel (all evaluate eq 9 with Coulomb's law): its outputs out(0), out(1), ... in order.
+Kernel stronge_kernel(const char* name, const char* doc, int rows, const char* returns_doc, std::vector<KernelArg> args,
+                      const std::vector<ex>& outputs, const std::map<std::string, std::string>& symbols = {}) {
+  Kernel k;
+  k.name = name;
+  k.equations = {"eq9"};
+  k.doc = doc;
+  k.returns = "Eigen::Matrix<Scalar, " + std::to_string(rows) + ", 1>";
+  k.returns_doc = returns_doc;
+  k.args = std::move(args);
+  k.symbol_code = coefficient_symbols();
+  for (const auto& [symbol, code] : symbols) k.symbol_code[symbol] = code;
+  for (std::size_t i = 0; i < outputs.size(); ++i) k.outputs.push_back({"out(" + std::to_string(i) + ")", outputs[i]});
+  return k;
+}
+
+std::vector<Kernel> stronge_kernels(const StrongeForms& f) {
+  const KernelArg c{"const Scalar& c", "cos theta of the sliding direction"}, s{"const Scalar& s", "sin theta"};
+  const KernelArg c0{"const Scalar& c0", "cos theta_0 (c0^2 + s0^2 = 1)"}, s0{"const Scalar& s0", "sin theta_0"};
+  const KernelArg V{"const Eigen::Matrix<Scalar, 3, 1>& V",
+                    "relative velocity at the impulse centre now (n, t, z), sliding: (V_t, V_z) != 0"};
+  return {
+      stronge_kernel("stronge_sliding_rate",
+                     "Stronge's sliding right-hand side: dV/dp = -K (1, mu u / |u|) / m' with u = (V_t, V_z), the "
+                     "normal impulse p the independent variable (eq 9 with Coulomb's law).",
+                     3, "dV/dp (n, t, z)", {kK, kMp, kMu, V},
+                     {f.sliding_rate(0, 0), f.sliding_rate(1, 0), f.sliding_rate(2, 0)}),
+      stronge_kernel("stronge_direction_rates",
+                     "Sliding along the unit direction d = (c, s) of the contact plane: how fast the sliding speed "
+                     "grows and its direction turns, from m' du/dp = -(rows t, z of K) (1, mu c, mu s).",
+                     2, "(m' d|u|/dp, m' |u| dtheta/dp), theta from t towards z", {kK, kMu, c, s},
+                     {f.growth, f.turning}, {{"dc", "c"}, {"ds", "s"}}),
+      stronge_kernel("stronge_stick_ratio",
+                     "The tangential impulse ratio that keeps a stopped contact stuck: dP/dp = (1, r_t, r_z) with "
+                     "dV_t = dV_z = 0 (Coulomb's cone holds it when |r| <= mu).",
+                     2, "(r_t, r_z)", {kK}, {f.stick_ratio(0, 0), f.stick_ratio(1, 0)}),
+      stronge_kernel("stronge_invariant_quartic",
+                     "The invariant directions of the sliding map (turning = 0) at theta = theta_0 + phi: (1 + t^2)^2 "
+                     "times the turning rate, t = tan(phi / 2), a quartic in t.",
+                     5, "the coefficients of t^0 .. t^4", {kK, kMu, c0, s0}, f.invariant_quartic,
+                     {{"c0", "c0"}, {"s0", "s0"}}),
+  };
+}
+
 }  // namespace
 
 std::vector<GeneratedFile> kernel_files(const Derivation& d, const ClosedForms& c) {
+  const StrongeForms f = derive_stronge_forms();
   return {
       {"coefficient_matrix.hpp", "K of eq 9 from the full Newton-Euler tensors", {general_coefficient_matrix(d)}},
       {"coefficient_matrix_appendix_a.hpp", "K of eq 9 under the Appendix A assumptions, c3 corrected",
@@ -256,6 +304,8 @@ std::vector<GeneratedFile> kernel_files(const Derivation& d, const ClosedForms& 
       {"brach.hpp", "Independent impulse ratios, eqs 24-27",
        {brach_impulse(c), brach_critical(c, 't'), brach_critical(c, 'z'), brach_critical(c, 'b')}},
       {"energy.hpp", "Kinetic-energy change of an impulse", {energy_change(c)}},
+      {"stronge.hpp", "Stronge's impact through the normal impulse: sliding, sticking, invariant directions",
+       stronge_kernels(f)},
   };
 }
 

@@ -14,7 +14,9 @@
 #include "impact3d/generated/energy.hpp"
 #include "impact3d/generated/full_impact.hpp"
 #include "impact3d/generated/solution_plane.hpp"
+#include "impact3d/generated/stronge.hpp"
 #include "model.hpp"
+#include "stronge_forms.hpp"
 
 using namespace impact3d::symbolic;
 using namespace GiNaC;
@@ -120,6 +122,35 @@ TEST_CASE("closed-form kernels equal the derived expressions exactly", "[check]"
     }
     CHECK(impact3d::generated::energy_change(in.K, in.mp, in.V, P) == value(c.energy_change, with_p));
   }
+}
+
+// Stronge's forms at rational directions (the sliding rate's square root is checked at 50 digits, in
+// tests/mechanics/check_stronge_forms.cpp: a rational kernel has no sqrt).
+TEST_CASE("stronge kernels equal the derived expressions exactly", "[check]") {
+  const StrongeForms f = derive_stronge_forms();
+  Draw d;
+  int checked = 0;
+  for (int n = 0; n < 40; ++n) {
+    Inputs in = draw(d);
+    // (c, s) and (c0, s0) unit and rational: from Pythagorean triples.
+    const int triples[][3] = {{3, 4, 5}, {-5, 12, 13}, {8, -15, 17}, {-7, -24, 25}};
+    const auto& a = triples[n % 4];
+    const auto& b = triples[(n / 4) % 4];
+    exmap v = in.v;
+    v[sym("dc")] = numeric(a[0], a[2]), v[sym("ds")] = numeric(a[1], a[2]);
+    v[sym("c0")] = numeric(b[0], b[2]), v[sym("s0")] = numeric(b[1], b[2]);
+    const Q c(Q(a[0]) / a[2]), s(Q(a[1]) / a[2]), c0(Q(b[0]) / b[2]), s0(Q(b[1]) / b[2]);
+    const auto rates = impact3d::generated::stronge_direction_rates(in.K, in.mu, c, s);
+    CHECK(rates(0) == value(f.growth, v));
+    CHECK(rates(1) == value(f.turning, v));
+    const auto r = impact3d::generated::stronge_stick_ratio(in.K);
+    CHECK(r(0) == value(f.stick_ratio(0, 0), v));
+    CHECK(r(1) == value(f.stick_ratio(1, 0), v));
+    const auto q = impact3d::generated::stronge_invariant_quartic(in.K, in.mu, c0, s0);
+    for (int i = 0; i < 5; ++i) CHECK(q(i) == value(f.invariant_quartic[static_cast<std::size_t>(i)], v));
+    ++checked;
+  }
+  CHECK(checked == 40);
 }
 
 TEST_CASE("the general K kernel equals the derivation exactly", "[check]") {

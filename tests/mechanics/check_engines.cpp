@@ -6,7 +6,6 @@
 
 #include <iostream>
 
-#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include "support.hpp"
@@ -17,17 +16,6 @@ using namespace impact3d;
 using namespace impact3d::test;
 
 namespace {
-
-// cond(J) of the worse-conditioned vehicle: the engines invert J differently (adjugate over
-// determinant, Cholesky), each accurate to about eps cond(J).
-double inertia_condition(const Scene<double>& s) {
-  double c = 1;
-  for (const auto& b : s.body) {
-    Eigen::SelfAdjointEigenSolver<M3> eig(b.J_B, Eigen::EigenvaluesOnly);
-    c = std::max(c, eig.eigenvalues().maxCoeff() / eig.eigenvalues().minCoeff());
-  }
-  return c;
-}
 
 struct Worst {
   std::string quantity;

@@ -73,8 +73,8 @@ TEST_CASE("the closed-form rest of a slide is the slide followed in tau to rest"
     const Mat3<W> K = p.K.cast<W>();
     const auto map_w = stronge::TangentialMap<W>::of(K);
     const auto map_d = stronge::TangentialMap<double>::of(p.K);
-    const auto dirs_w = stronge::invariant_directions(map_w, W(mu));
-    const auto dirs_d = stronge::invariant_directions(map_d, mu);
+    const auto dirs_w = stronge::invariant_directions<stronge::GeneratedForms>(K, W(mu));
+    const auto dirs_d = stronge::invariant_directions<stronge::GeneratedForms>(p.K, mu);
     if (dirs_w.size() != dirs_d.size()) continue;
     for (std::size_t k = 0; k < dirs_w.size(); ++k) {
       if (!(dirs_w[k].growth < W(0))) continue;

@@ -180,7 +180,7 @@ TEST_CASE("no initial sliding and sticking throughout: the Full Impact (eqs 10-1
     const Scene<double> s = random_scene(g);
     Problem<double> p = make_problem<GeneratedEngine>(s);
     p.V_ri = V3(p.V_ri.x(), 0, 0);
-    const auto r = stronge::TangentialMap<double>::of(p.K).stick_ratio();
+    const auto r = stronge::GeneratedForms::stick_ratio(p.K);
     REQUIRE(r);
     const double mu = 1.01 * std::hypot((*r)[0], (*r)[1]);
     const V3 full = *GeneratedEngine::try_full_impact(p, p.restitution);

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include <Eigen/Eigenvalues>
+
 #include "impact3d/mechanics/analysis.hpp"
 
 namespace impact3d::test {
@@ -102,5 +104,16 @@ inline std::vector<Strategy<double>> every_floating_strategy(double mu) {
 
 // Scale of the velocities that enter a post-impact relative velocity (rounding.hpp).
 using rounding::velocity_scale;
+
+// cond(J) of the worse-conditioned vehicle: the engines invert J differently (adjugate over
+// determinant, Cholesky), each accurate to about eps cond(J).
+inline double inertia_condition(const Scene<double>& s) {
+  double c = 1;
+  for (const auto& b : s.body) {
+    Eigen::SelfAdjointEigenSolver<M3> eig(b.J_B, Eigen::EigenvaluesOnly);
+    c = std::max(c, eig.eigenvalues().maxCoeff() / eig.eigenvalues().minCoeff());
+  }
+  return c;
+}
 
 }  // namespace impact3d::test

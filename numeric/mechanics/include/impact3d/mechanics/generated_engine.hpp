@@ -17,11 +17,13 @@
 #include "impact3d/mechanics/kinematics.hpp"
 #include "impact3d/mechanics/problem.hpp"
 #include "impact3d/mechanics/strategy.hpp"
+#include "impact3d/mechanics/stronge/generated_forms.hpp"
 
 namespace impact3d {
 
 struct GeneratedEngine : EnginePrimitives<GeneratedEngine> {
   static constexpr const char* singular_reason = "a closed form divides by zero";
+  using StrongeForms = stronge::GeneratedForms;
 
   template <typename Scalar>
   static Mat3<Scalar> coefficient_matrix(const Scene<Scalar>& s) {

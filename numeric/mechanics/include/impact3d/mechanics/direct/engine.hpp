@@ -6,12 +6,14 @@
 #include "impact3d/mechanics/direct/coefficient_matrix.hpp"
 #include "impact3d/mechanics/direct/constraints.hpp"
 #include "impact3d/mechanics/direct/full_impact.hpp"
+#include "impact3d/mechanics/direct/stronge_forms.hpp"
 #include "impact3d/mechanics/engine_primitives.hpp"
 
 namespace impact3d::direct {
 
 struct DirectEngine : EnginePrimitives<DirectEngine> {
   static constexpr const char* singular_reason = "singular system";
+  using StrongeForms = direct::StrongeForms;
 
   template <typename Scalar>
   static Mat3<Scalar> coefficient_matrix(const Scene<Scalar>& s) {

@@ -60,8 +60,8 @@ Singular solve(const Problem<Scalar>& p, const Stronge<Scalar>& spec, ImpulseSol
   if constexpr (is_exact_v<Scalar> || is_enclosure_v<Scalar>) {
     throw SolveError(kStrongeNotExact);
   } else {
-    stronge::History<Scalar> h =
-        stronge::integrate(p.K, p.m_prime, p.V_ri, spec.mu, p.restitution, spec.law, out.for_report);
+    stronge::History<Scalar> h = stronge::integrate<Scalar, typename Engine::StrongeForms>(
+        p.K, p.m_prime, p.V_ri, spec.mu, p.restitution, spec.law, out.for_report);
     if (h.failure) return {h.failure, true};
     out.P_C = h.P_C;
     out.mu = plane_length(out.P_C.y(), out.P_C.z()) / out.P_C.x();  // at most mu: less once it sticks

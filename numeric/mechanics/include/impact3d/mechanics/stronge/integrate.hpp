@@ -1,5 +1,6 @@
 // Stronge's impact followed through the normal impulse p, from m', K and V_ri (eq 9), to the end that
-// the restitution law sets. The contact slides (a Taylor series step, sliding_series.hpp, of order
+// the restitution law sets, its decisions by the engine's forms of the sliding map (generated_forms.hpp,
+// direct/stronge_forms.hpp). The contact slides (a Taylor series step, sliding_series.hpp, of order
 // ceil(-ln eps / 2) + 1 and the step that makes its next term eps, Jorba and Zou's rule; below kApproach
 // of the approach speed or while the sliding speed falls, in the regular variable tau,
 // approach_series.hpp, and within reach of the invariant direction a stop settles on, the rest in closed
@@ -16,6 +17,7 @@
 #include <type_traits>
 
 #include "impact3d/mechanics/stronge/approach_series.hpp"
+#include "impact3d/mechanics/stronge/generated_forms.hpp"
 #include "impact3d/mechanics/stronge/history.hpp"
 #include "impact3d/mechanics/stronge/real_roots.hpp"
 #include "impact3d/mechanics/stronge/sliding_series.hpp"
@@ -37,7 +39,7 @@ int taylor_order() {
 
 namespace detail {
 
-template <typename Scalar>
+template <typename Scalar, typename Forms>
 struct Follow {
   const Mat3<Scalar>& K;
   Vec3<Scalar> U_i;
@@ -97,7 +99,7 @@ struct Follow {
   bool from_rest(bool at_start) {
     using std::atan2;
     sliding = false;
-    const auto r = map.stick_ratio();
+    const auto r = Forms::stick_ratio(K);
     if (!r) return fail("the tangential block of K is singular: the contact cannot stick or slide out");
     if ((*r)[0] * (*r)[0] + (*r)[1] * (*r)[1] <= mu * mu) {
       f_t = (*r)[0], f_z = (*r)[1];
@@ -121,7 +123,7 @@ struct Follow {
   }
 
   const std::vector<Direction<Scalar>>& invariant() {
-    if (!directions) directions = invariant_directions(map, mu);
+    if (!directions) directions = invariant_directions<Forms>(K, mu);
     return *directions;
   }
 
@@ -136,7 +138,7 @@ struct Follow {
     const Scalar ut = (*u_carried)[0], uz = (*u_carried)[1];
     const Scalar rho = sqrt(ut * ut + uz * uz);
     const Scalar c0 = ut / rho, s0 = uz / rho;
-    const Scalar f0 = map.turning(mu, c0, s0);
+    const Scalar f0 = Forms::direction_rates(K, mu, c0, s0)[1];
     // The direction turns towards the first invariant direction ahead of it in f's sense; delta is the
     // angle still to turn, negated (th0 - th*). Every direction is invariant when the list is empty.
     const Scalar pi2 = Scalar(2) * pi<Scalar>();
@@ -349,7 +351,7 @@ struct Follow {
     if (ends && !phase_ended(U_now)) return u_carried.reset(), false;
     if (rho <= Scalar(16) * eps) {
       u_carried.reset();
-      const Scalar g = rho > Scalar(0) ? map.growth(mu, Scalar(ut / rho), Scalar(uz / rho)) : Scalar(-1);
+      const Scalar g = rho > Scalar(0) ? Forms::direction_rates(K, mu, Scalar(ut / rho), Scalar(uz / rho))[0] : Scalar(-1);
       // The slide skipped: Delta x <= rho / |g|, the tangential impulse's change of rate at most 2 mu.
       h.error_bound += g < Scalar(0) ? Scalar(rho * (Scalar(1) + Scalar(2) * mu / -g)) : Scalar(1);
       c_prev.reset(), s_prev.reset();
@@ -369,7 +371,7 @@ struct Follow {
       // In tau below kApproach, and wherever the slide shrinks: its steps in x only approach a stop
       // geometrically (their radius is the distance to it), those in tau an e-fold at a time.
       const Scalar rho = sqrt(ut * ut + uz * uz);
-      if (rho <= Scalar(kApproach) || map.growth(mu, Scalar(ut / rho), Scalar(uz / rho)) < Scalar(0)) return approach_step(order);
+      if (rho <= Scalar(kApproach) || Forms::direction_rates(K, mu, Scalar(ut / rho), Scalar(uz / rho))[0] < Scalar(0)) return approach_step(order);
       u_carried.reset();
     }
     const SlidingSeries<Scalar> ser = sliding_series(K, U_i, mu, x, a, b, W, order);
@@ -467,11 +469,11 @@ struct Follow {
 
 // The impact followed from m', K, V_ri (contact axes, V_rn > 0) at friction mu and restitution e; the
 // events are recorded when `record` (a report), else only the end. A failure leaves the impulse unset.
-template <typename Scalar>
+template <typename Scalar, typename Forms = GeneratedForms>
 History<Scalar> integrate(const Mat3<Scalar>& K, const Scalar& m_prime, const Vec3<Scalar>& V_ri, const Scalar& mu,
                           const Scalar& e, RestitutionLaw law, bool record = true) {
   const Scalar v0 = V_ri.norm();
-  detail::Follow<Scalar> f(K, Vec3<Scalar>(V_ri / v0), mu, e, law, record);
+  detail::Follow<Scalar, Forms> f(K, Vec3<Scalar>(V_ri / v0), mu, e, law, record);
   History<Scalar> h = f.run();
   if (h.failure) return h;
   const Scalar p0 = m_prime * v0;

@@ -3,7 +3,9 @@
 //   m' du/dp = -(k + A f),   u = (V_t, V_z),
 // k = (K_tn, K_zn) the normal column's tangential part and A = [[K_tt, K_tz], [K_zt, K_zz]] the
 // tangential block. Sliding: f = mu u/|u|; sticking: f = r with A r = -k, the ratio that keeps u = 0;
-// resuming from rest: f = mu d along a direction d that the map carries onto itself, outward.
+// resuming from rest: f = mu d along a direction d that the map carries onto itself, outward. The stop
+// series (stop_series.hpp) reads k and A; the decisions go through the engine's forms
+// (generated_forms.hpp, direct/stronge_forms.hpp).
 #pragma once
 
 #include <array>
@@ -26,13 +28,6 @@ struct TangentialMap {
     return {K(1, 0), K(2, 0), K(1, 1), Scalar((K(1, 2) + K(2, 1)) / Scalar(2)), K(2, 2)};
   }
 
-  // The tangential impulse ratio that keeps u = 0 (A r = -k); empty when A is singular.
-  std::optional<std::array<Scalar, 2>> stick_ratio() const {
-    const Scalar det = A_tt * A_zz - A_tz * A_tz;
-    if (!(det > Scalar(0))) return std::nullopt;
-    return std::array<Scalar, 2>{Scalar(-(A_zz * k_t - A_tz * k_z) / det), Scalar(-(A_tt * k_z - A_tz * k_t) / det)};
-  }
-
   // -(k + mu A d) . d: how fast |u| grows along the direction d when sliding along it.
   Scalar growth(const Scalar& mu, const Scalar& c, const Scalar& s) const {
     return -((k_t + mu * (A_tt * c + A_tz * s)) * c + (k_z + mu * (A_tz * c + A_zz * s)) * s);
@@ -52,37 +47,30 @@ struct Direction {
 // Every invariant direction of the map at friction mu: the unit vectors d with (k + mu A d) x d = 0.
 // With d at angle theta the condition is a trigonometric polynomial of degree 2,
 //   k_t s - k_z c + mu ((A_tt - A_zz) c s + A_tz (s^2 - c^2)) = 0,
-// which the half-angle t = tan(phi / 2), theta = theta_0 + phi, turns into a quartic; theta_0 is the
-// direction of a fixed rational set whose opposite is farthest from a root, so that none is lost at
-// t = infinity. Empty when the condition vanishes identically (k = 0 and A isotropic: every direction is
-// invariant and none outward).
-template <typename Scalar>
-std::vector<Direction<Scalar>> invariant_directions(const TangentialMap<Scalar>& m, const Scalar& mu) {
+// which the half-angle t = tan(phi / 2), theta = theta_0 + phi, turns into a quartic (the engine's
+// Forms, generated_forms.hpp); theta_0 is the direction of a fixed rational set whose opposite is
+// farthest from a root, so that none is lost at t = infinity. Empty when the condition vanishes
+// identically (k = 0 and A isotropic: every direction is invariant and none outward).
+template <typename Forms, typename Scalar>
+std::vector<Direction<Scalar>> invariant_directions(const Mat3<Scalar>& K, const Scalar& mu) {
   using std::abs;
   const std::array<std::array<int, 2>, 8> rational{{{5, 0}, {0, 5}, {-5, 0}, {0, -5}, {3, 4}, {-4, 3}, {-3, -4}, {4, -3}}};
   Scalar best(-1), c0(1), s0(0);
   for (const auto& v : rational) {
     const Scalar c = ratio<Scalar>(v[0], 5), s = ratio<Scalar>(v[1], 5);
-    const Scalar at_opposite = abs(m.turning(mu, Scalar(-c), Scalar(-s)));
+    const Scalar at_opposite = abs(Forms::direction_rates(K, mu, Scalar(-c), Scalar(-s))[1]);
     if (at_opposite > best) best = at_opposite, c0 = c, s0 = s;
   }
-  const Scalar scale = abs(m.k_t) + abs(m.k_z) + mu * (abs(m.A_tt) + abs(m.A_zz) + abs(m.A_tz));
+  const Scalar scale = abs(K(1, 0)) + abs(K(2, 0)) + mu * (abs(K(1, 1)) + abs(K(2, 2)) + abs(K(1, 2)));
   const Scalar zero = Scalar(64) * std::numeric_limits<Scalar>::epsilon() * scale;
   if (!(best > zero)) return {};
-  // The condition as a1 sin th + b1 cos th + a2 sin 2th + b2 cos 2th, rotated to phi = th - th0.
-  const Scalar a1 = m.k_t, b1 = -m.k_z, a2 = mu * (m.A_tt - m.A_zz) / Scalar(2), b2 = -mu * m.A_tz;
-  const Scalar c2 = c0 * c0 - s0 * s0, s2 = Scalar(2) * s0 * c0;
-  const Scalar a1r = a1 * c0 - b1 * s0, b1r = a1 * s0 + b1 * c0;
-  const Scalar a2r = a2 * c2 - b2 * s2, b2r = a2 * s2 + b2 * c2;
-  // (1 + t^2)^2 times the condition, with sin phi = 2t / (1 + t^2), cos phi = (1 - t^2) / (1 + t^2).
-  const std::vector<Scalar> quartic{Scalar(b1r + b2r), Scalar(Scalar(2) * a1r + Scalar(4) * a2r), Scalar(Scalar(-6) * b2r),
-                                    Scalar(Scalar(2) * a1r - Scalar(4) * a2r), Scalar(b2r - b1r)};
+  const std::array<Scalar, 5> q = Forms::invariant_quartic(K, mu, c0, s0);
   std::vector<Direction<Scalar>> out;
-  for (const Scalar& t : real_roots(quartic, zero)) {
-    const Scalar q = Scalar(1) + t * t;
-    const Scalar cp = (Scalar(1) - t * t) / q, sp = Scalar(2) * t / q;
+  for (const Scalar& t : real_roots(std::vector<Scalar>(q.begin(), q.end()), zero)) {
+    const Scalar q1 = Scalar(1) + t * t;
+    const Scalar cp = (Scalar(1) - t * t) / q1, sp = Scalar(2) * t / q1;
     const Scalar c = c0 * cp - s0 * sp, s = s0 * cp + c0 * sp;
-    out.push_back({c, s, m.growth(mu, c, s)});
+    out.push_back({c, s, Forms::direction_rates(K, mu, c, s)[0]});
   }
   return out;
 }
