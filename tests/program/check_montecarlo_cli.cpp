@@ -250,8 +250,8 @@ TEST_CASE("a seed and a sample count are read in decimal: 010 is ten, not octal 
 }
 
 TEST_CASE("a run is sized before it starts: one past the memory limit is refused, saying how to fit") {
-  // 1.1e6 samples of four strategies: within the samples' limit, but 2336 bytes a sample (67 outputs
-  // of 8 bytes a strategy, 48 on each of the 4 summaries' threads) is 2451 MiB, past the 2048 a run may
+  // 1.1e6 samples of four strategies: within the samples' limit, but 2464 bytes a sample (71 outputs
+  // of 8 bytes a strategy, 48 on each of the 4 summaries' threads) is 2585 MiB, past the 2048 a run may
   // take. Run within 512 MiB of address space: refused before anything is allocated.
   const fs::path dir = scratch();
   const fs::path u = dir / "u.json";
@@ -261,8 +261,8 @@ TEST_CASE("a run is sized before it starts: one past the memory limit is refused
                             "", "", 20, 512);
   CHECK(r.status == 1);
   CHECK(r.out.empty());
-  CHECK(r.err == "impact3d: error: --samples: 1100000 samples of 4 results would take 2451 MiB (2336 bytes a sample), more than "
-                 "the 2048 MiB a run may take: every output of every sample is kept for the percentiles; take at most 919299 "
+  CHECK(r.err == "impact3d: error: --samples: 1100000 samples of 4 results would take 2585 MiB (2464 bytes a sample), more than "
+                 "the 2048 MiB a run may take: every output of every sample is kept for the percentiles; take at most 871543 "
                  "samples, or fewer strategies\n");
   fs::remove_all(dir);
 }

@@ -143,6 +143,40 @@ TEST_CASE("the result CSV written from the analysis is the CSV taken from the wr
   CHECK(empty_cells > 0);
 }
 
+// Stronge's columns (the bundled stronge example, beside pc-crash): at every floating precision, the
+// cells of the written document; filled for stronge, empty for pc-crash; a sticking end's direction
+// null, an empty cell.
+TEST_CASE("stronge's columns are its document's, empty for the algebraic strategies") {
+  const CaseSpec spec = read_case(impact3d::test::read_text(impact3d::test::example("stronge/fig8_through_the_impact.json")));
+  const auto& names = result_csv_column_names();
+  const auto column = [&](const char* name) { return 9 + static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin()); };
+  int compared = 0, filled = 0, empty = 0;
+  for (const std::string& precision : precision_names()) {
+    if (precision == "exact" || precision.rfind("certified", 0) == 0) continue;  // stronge refuses them
+    RenderOptions csv;
+    csv.format = Format::csv;
+    csv.line = 3;
+    const std::string direct = render(spec, precision, csv);
+    INFO(precision);
+    REQUIRE(direct == from_document(spec, precision, csv));
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < spec.strategies.size(); ++k) {
+      const std::vector<std::string> row = cells_of(direct.substr(at));
+      at = direct.find('\n', at) + 1;
+      const bool stronge = row.at(7).rfind("stronge", 0) == 0;  // the strategy cell
+      for (const char* name : {"swerve_deg", "normal_work.compression", "normal_work.restitution", "integration.steps",
+                               "integration.error_bound", "integration.diverging_directions"}) {
+        CHECK(row.at(column(name)).empty() == !stronge);
+        filled += stronge, empty += !stronge;
+      }
+    }
+    ++compared;
+  }
+  CHECK(compared == static_cast<int>(impact3d::kScalarCount));  // every floating precision the build has
+  CHECK(filled > 0);
+  CHECK(empty > 0);
+}
+
 TEST_CASE("a NaN, an infinity and a negative zero are the document's null and -0 in the CSV") {
   const CaseSpec spec = impact3d::test::load_spec(impact3d::test::example("offset_frontal.json"));
   impact3d::Analysis<double> a = impact3d::analyze(to_scene<double>(spec), to_strategies<double>(spec));
@@ -190,7 +224,11 @@ TEST_CASE("the result CSV's header is the one documented") {
       for (int i = 0; i < 3; ++i) expected += "," + std::string(v) + w + "[" + std::to_string(i) + "]";
     for (const char* w : {"delta_v_magnitude", "pdof_deg", "pdof_clock"}) expected += "," + std::string(v) + w;
   }
-  expected += ",energy.before,energy.after,energy.loss,rounding_bound,warnings\n";
+  expected += ",energy.before,energy.after,energy.loss";
+  // Stronge's course (docs/case-format.md), empty for the algebraic strategies.
+  expected += ",swerve_deg,final_direction_deg,normal_work.compression,normal_work.restitution,integration.steps,"
+              "integration.error_bound,integration.diverging_directions";
+  expected += ",rounding_bound,warnings\n";
   CHECK(result_csv_header() == expected);
   // A rejected row has as many cells.
   const std::string error = result_csv_error(9, "$.x: a \"problem\", quoted");

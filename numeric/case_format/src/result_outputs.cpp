@@ -36,6 +36,11 @@ const std::vector<OutputPath>& monte_carlo_outputs() {
       add(fmt::format("vehicles[{}].ees", veh));
     }
     for (const char* k : {"before", "after", "loss"}) add(fmt::format("energy.{}", k));
+    // An integrated impulse's course (stronge only).
+    add("swerve_deg");
+    add("final_direction_deg", true);  // (-180, 180]
+    add("normal_work.compression");
+    add("normal_work.restitution");
     return v;
   }();
   return outputs;

@@ -76,6 +76,17 @@ void result_csv_cells(Sink& c, const Solution<Scalar>& s, const Present<Scalar>&
   c.number("energy.before", s.energy_before, f.energy);
   c.number("energy.after", s.energy_after, f.energy);
   c.number("energy.loss", s.energy_loss, f.energy);
+  // An integrated impulse's course (stronge), empty cells for the others; its events only in JSON.
+  const stronge::History<Scalar>* h = imp.history ? &*imp.history : nullptr;
+  const auto of = [h](Scalar stronge::History<Scalar>::*field) { return h ? std::optional<Scalar>(h->*field) : std::nullopt; };
+  const auto count_of = [h](int stronge::History<Scalar>::*field) { return h ? std::optional<int>(h->*field) : std::nullopt; };
+  c.number("swerve_deg", of(&stronge::History<Scalar>::swerve_deg));
+  c.number("final_direction_deg", h ? h->final_direction_deg : std::nullopt);
+  c.number("normal_work.compression", of(&stronge::History<Scalar>::work_compression), f.energy);
+  c.number("normal_work.restitution", of(&stronge::History<Scalar>::work_restitution), f.energy);
+  c.count("integration.steps", count_of(&stronge::History<Scalar>::steps));
+  c.bound("integration.error_bound", of(&stronge::History<Scalar>::error_bound));
+  c.count("integration.diverging_directions", count_of(&stronge::History<Scalar>::diverging_directions));
   c.bound("rounding_bound", s.rounding_bound);
 }
 
@@ -134,6 +145,10 @@ struct CsvCells {
     put_csv_text(out, s);
   }
   void bound(const char*, const Scalar& x) { scalar(x, 3); }
+  void bound(const char*, const std::optional<Scalar>& x) {
+    if (x) scalar(*x, 3);
+    else out += ',';
+  }
 };
 
 }  // namespace detail

@@ -18,8 +18,9 @@ struct OutputPath {
 };
 
 // Every number of a result that a Monte Carlo run summarizes: the impulse, the relative velocity, the
-// ratios and limits used, sliding and swerve, each vehicle's post-impact velocities, ΔV and PDOF, and
-// the energy. An output a strategy does not write (brach has no "gir") is left out of its summary.
+// ratios and limits used, sliding and swerve, each vehicle's post-impact velocities, ΔV and PDOF, the
+// energy, and an integrated impulse's swerve, final direction and normal work. An output a strategy
+// does not write (brach has no "gir", only stronge a "swerve_deg") is left out of its summary.
 const std::vector<OutputPath>& monte_carlo_outputs();
 
 }  // namespace impact3d::case_format

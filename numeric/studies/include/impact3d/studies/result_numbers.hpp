@@ -52,6 +52,13 @@ void numbers_of_solution(const Solution<Scalar>& s, const UnitFactors<Scalar>& f
     null_or(s.deformation.ees[i], f.velocity);
   }
   put(Scalar(s.energy_before / f.energy)), put(Scalar(s.energy_after / f.energy)), put(Scalar(s.energy_loss / f.energy));
+  if (const auto& h = imp.history) {
+    put(h->swerve_deg);
+    null_or(h->final_direction_deg, one);
+    put(Scalar(h->work_compression / f.energy)), put(Scalar(h->work_restitution / f.energy));
+  } else {
+    for (int k = 0; k < 4; ++k) written[c++] = 0;
+  }
   if (c != monte_carlo_outputs().size()) throw std::logic_error("numbers_of_solution and monte_carlo_outputs disagree");
 }
 
