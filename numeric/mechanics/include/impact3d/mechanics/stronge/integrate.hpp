@@ -55,6 +55,10 @@ struct Follow {
   std::optional<Scalar> c_prev, s_prev;  // the sliding direction at the last step's end
   std::optional<std::array<Scalar, 2>> u_carried;  // the sliding velocity, while followed in tau
   std::optional<std::vector<Direction<Scalar>>> directions;  // the map's invariant directions, once needed
+  // Where the closed form last failed (rho, |delta|) and in which phase: it is tried again once the slide
+  // has halved one of them or the phase has changed, not at every step on the way.
+  std::optional<std::array<Scalar, 2>> failed_at;
+  bool failed_compressing = true;
   History<Scalar> h;
 
   Follow(const Mat3<Scalar>& K_, const Vec3<Scalar>& U_i_, const Scalar& mu_, const Scalar& e_, RestitutionLaw law_, bool record_)
@@ -157,14 +161,21 @@ struct Follow {
       delta = *nearest;
     }
     constexpr double kReach = 1;  // radians: farther, the series would need more terms than a step
-    if (!(abs(delta) <= Scalar(kReach))) return false;
+    if (failed_at && failed_compressing == compressing && rho > (*failed_at)[0] / Scalar(2) &&
+        abs(delta) > (*failed_at)[1] / Scalar(2))
+      return false;
+    const auto failed = [&] {
+      failed_at = {rho, Scalar(abs(delta))}, failed_compressing = compressing;
+      return false;
+    };
+    if (!(abs(delta) <= Scalar(kReach))) return failed();
     // The rest is rho F: to eps of the impact's scale, F is needed to eps / rho.
     const StopTail<Scalar> tail = stop_tail(K, map, mu, c, s, delta, Scalar(eps / rho), order);
-    if (!tail.converged) return false;
+    if (!tail.converged) return failed();
     // No phase ends within the rest. On the way U_n = U_n(stop) + rho K_n . F(th) with rho falling from
     // its value now, so U_n lies within rho (K_n . F_0 -+ variation) of U_n(stop); x only grows, and W
     // only falls while U_n <= 0.
-    if (!tail.shrinking) return false;
+    if (!tail.shrinking) return failed();
     const Vec3<Scalar> P_stop = Vec3<Scalar>(x, a, b) + tail.F * rho;
     const Scalar U_n_stop = (U_i - K * P_stop)(0);
     const Scalar dx = rho * tail.F(0);
@@ -176,7 +187,7 @@ struct Follow {
     else if (law == RestitutionLaw::energetic) clear = U_n_high <= Scalar(0) && end_value(P_stop(0), W_stop, U_n_stop) > Scalar(0);
     else if (law == RestitutionLaw::poisson) clear = end_value(P_stop(0), W_stop, U_n_stop) > Scalar(0);
     else clear = end_value(P_stop(0), W_stop, U_n_low) > Scalar(0);
-    if (!clear) return false;
+    if (!clear) return failed();
     // The path on the way, from the closed form: at angles delta (1 - i / k) (by rho when the direction
     // does not turn); at the hardware precisions, which the figures draw (100 digits has no exp).
     if constexpr (std::is_floating_point_v<Scalar>) if (record) {
