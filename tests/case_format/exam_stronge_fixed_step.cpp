@@ -9,9 +9,10 @@
 // reaches zero (the contact is taken to stop), or at compression's end or the impact's end, which are
 // exact within a step (V is linear in p there). Its error is first order in the turning allowed.
 //
-// What it shows: at 30 degrees the scheme's impulse is off by far more than the integration's bound,
-// and its error falls about linearly with the allowed turn (a tenth of the turn, about a tenth of the
-// error), towards the integrated answer, an independent route to the same limit. The table it prints
+// What it shows: at 30 degrees the scheme's impulse is off by 1.5 to 1.9 % of |P| (known from this
+// test's first run; held between 0.5 % and 5 %), and its error falls at least linearly with the allowed
+// turn (a thirtieth of the turn, at least a tenth of the error), towards the integrated answer, an
+// independent route to the same limit. The table it prints
 // is docs/verification-and-compare.md's.
 #include <catch2/catch.hpp>
 
@@ -140,8 +141,9 @@ TEST_CASE("Figure 8: a scheme that lets the direction turn 30 degrees a step, be
       ++checked;
     }
     table += fmt::format("| integrated | | {} | bound {:.1e} | |\n", sol.impulse.history ? sol.impulse.history->steps : -1, bound);
-    // Far apart at 30 degrees, and first order: a thirtieth of the turn, at most a tenth of the gap.
-    CHECK(gap_30 > 1000 * bound);
+    // Apart at 30 degrees by what the first run found, and at least first order towards the integration.
+    CHECK(gap_30 > 0.005);
+    CHECK(gap_30 < 0.05);
     CHECK(gap_1 < gap_30 / 10);
   }
   WARN(table);

@@ -169,6 +169,8 @@ TEST_CASE("stronge's columns are its document's, empty for the algebraic strateg
         CHECK(row.at(column(name)).empty() == !stronge);
         filled += stronge, empty += !stronge;
       }
+      // The final direction: null (an empty cell) exactly where the contact sticks at the end.
+      if (stronge) CHECK(row.at(column("final_direction_deg")).empty() == (row.at(8) == "full"));
     }
     ++compared;
   }

@@ -110,10 +110,10 @@ bool certify(const std::vector<std::pair<std::string, case_format::CaseSpec>>& c
     const BallBits bits(kCertifyBits);
     try {
       auto algebraic = algebraic_strategies<Ball>(spec);
-      integrated += spec.strategies.size() - algebraic.strategies.size();
       indices.push_back(std::move(algebraic.index));
       refs.push_back(certified_analyze(case_format::to_scene<Ball>(spec), algebraic.strategies));
       ++enclosed;
+      integrated += spec.strategies.size() - algebraic.strategies.size();
     } catch (const std::exception& e) {
       indices.resize(refs.size() + 1);
       refs.push_back(std::nullopt);

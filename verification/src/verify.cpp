@@ -214,12 +214,15 @@ void measure(const Case& c, const Analysis<F>& ref, double cond, Engine engine, 
     }
     ++q.compared;
     if (s.impulse.integration_error) {
-      // An integrated impulse (stronge): within the two integrations' stated bounds and the rounding
-      // of the others, in the same units (kResultRoundings at the bound), for P, V_rf and the energy.
+      // An integrated impulse (stronge): P and V_rf within the two integrations' stated bounds and the
+      // rounding of the others, in the same units (kResultRoundings at the bound). The stated bound is
+      // relative to |P|; the velocities' is that times |P| / (m' |V_ri|) (stronge/history.hpp).
       const double stated = static_cast<double>(*s.impulse.integration_error) + static_cast<double>(*r.impulse.integration_error);
       const double units = (stated / rounding::kResultRoundings + eps * cond) / eps;
+      const double to_velocity = static_cast<double>(r.impulse.P_C.norm() / (ref.m_prime * r.V_ri.norm()));
+      const double units_V = (stated * to_velocity / rounding::kResultRoundings + eps * cond) / eps;
       rec("integrated P", wide_norm(s.impulse.P_C, r.impulse.P_C), r.impulse.P_C.norm(), units, where);
-      rec("integrated V", wide_norm(s.V_rf, r.V_rf), r.V_ri.norm(), units, where);
+      rec("integrated V", wide_norm(s.V_rf, r.V_rf), r.V_ri.norm(), units_V, where);
       continue;
     }
     rec("impulse P", wide_norm(s.impulse.P_C, r.impulse.P_C), r.impulse.P_C.norm(), cond, where);

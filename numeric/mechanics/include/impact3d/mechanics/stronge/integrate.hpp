@@ -168,7 +168,7 @@ struct Follow {
       failed_at = {rho, Scalar(abs(delta))}, failed_compressing = compressing;
       return false;
     };
-    if (!(abs(delta) <= Scalar(kReach))) return failed();
+    if (!(abs(delta) <= Scalar(kReach))) return false;  // cheap to find again: not a failure to remember
     // The rest is rho F: to eps of the impact's scale, F is needed to eps / rho.
     const StopTail<Scalar> tail = stop_tail(K, map, mu, c, s, delta, Scalar(eps / rho), order);
     if (!tail.converged) return failed();
