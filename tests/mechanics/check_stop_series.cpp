@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "impact3d/mechanics/stronge/approach_series.hpp"
+#include "impact3d/mechanics/stronge/generated_forms.hpp"
 #include "impact3d/mechanics/stronge/stop_series.hpp"
 #include "support.hpp"
 
@@ -34,12 +35,11 @@ Rest stepped(const Mat3<W>& K, const W& mu, const W& U_n0, const W& u0_t, const 
   const Vec3<W> U_i(U_n0, u0_t, u0_z);
   const W rho0 = sqrt(u0_t * u0_t + u0_z * u0_z);
   W x(0), a(0), b(0), work(0), ut = u0_t, uz = u0_z;
-  const stronge::TangentialMap<W> m = stronge::TangentialMap<W>::of(K);
   for (int step = 0; step < 2000; ++step) {
     const W rho = sqrt(ut * ut + uz * uz);
     if (rho <= W("1e-45") * rho0) {
       // The rest along the direction reached: x grows by rho / -g, P_t and P_z by mu times it along u.
-      const W dx = rho / -m.growth(mu, W(ut / rho), W(uz / rho));
+      const W dx = rho / -stronge::GeneratedForms::direction_rates(K, mu, W(ut / rho), W(uz / rho))[0];
       const W U_n = U_n0 - (K(0, 0) * x + K(0, 1) * a + K(0, 2) * b);
       return {Vec3<W>(x + dx, a + mu * dx * ut / rho, b + mu * dx * uz / rho), work + U_n * dx};
     }

@@ -1,5 +1,6 @@
 // Stronge's integrated impulse (mechanics/stronge/) on seeded random collisions, by consistency:
-// - the double integration holds the 50-digit one within the two integrations' stated error bounds;
+// - the double integration holds the 50-digit one within the two integrations' stated error bounds, also
+//   nearly plastic, where rounding moves the energetic end farthest;
 // - the total turning of the sliding direction is at least its net turn;
 // - the kinetic energy the impact takes, from the end state, is the normal work (W_c - W_r) plus the
 //   friction's, which is never negative; under the energetic law W_r = e^2 W_c, so it never gains;
@@ -69,6 +70,38 @@ TEST_CASE("double holds the 50-digit integration within the two stated bounds", 
   WARN("worst gap " << worst << " of its bound; " << stopped << " of " << checked << " stopped sliding");
   CHECK(checked == 60);
   CHECK(stopped > 0);  // the draws reach the stop, where the bound is widest
+#else
+  WARN("built without multiprecision: nothing to compare against");
+#endif
+}
+
+// Nearly plastic, the energetic end is where W, nearly flat in p (V_n near 0), has released e^2 W_c:
+// the normal work's rounding moves it by about eps W_c / |V_n| there, many eps of the impulse, which the
+// stated bound must carry (the 64 eps of the test above do not).
+TEST_CASE("nearly plastic, the stated bound carries the end's location under the work's rounding", "[stronge]") {
+#if IMPACT3D_MULTIPRECISION
+  using W = mp::float50;
+  std::mt19937_64 g(5907);
+  int checked = 0;
+  double widest = 0;  // the largest gap, in eps
+  for (int n = 0; n < 20; ++n) {
+    const Draw d = draw_collision(g);
+    for (const double e : {1e-4, 1e-6}) {
+      const auto lo = stronge::integrate(d.p.K, d.p.m_prime, d.p.V_ri, d.mu, e, RestitutionLaw::energetic, false);
+      const auto hi = stronge::integrate<W>(d.p.K.cast<W>(), W(d.p.m_prime), d.p.V_ri.cast<W>(), W(d.mu), W(e),
+                                            RestitutionLaw::energetic, false);
+      REQUIRE(lo.failure == nullptr);
+      REQUIRE(hi.failure == nullptr);
+      const V3 reference = hi.P_C.cast<double>();
+      const double gap = (lo.P_C - reference).norm() / reference.norm();
+      CHECK(gap <= lo.relative_error + static_cast<double>(hi.relative_error) + 64 * eps);
+      widest = std::max(widest, gap / eps);
+      ++checked;
+    }
+  }
+  WARN("widest gap " << widest << " eps");
+  CHECK(checked == 40);
+  CHECK(widest > 64);  // the draws reach the effect
 #else
   WARN("built without multiprecision: nothing to compare against");
 #endif

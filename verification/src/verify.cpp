@@ -74,7 +74,9 @@ case_format::CaseSpec random_case(std::mt19937_64& g) {
           const Parameter& p = Spec::parameters[k];
           const ParameterDraw& d = draws[k];
           const std::string key(p.key);
-          if (p.type == ParameterType::choice) st.choices[key] = std::string(d.choice);
+          if (p.type == ParameterType::choice && !d.choice.empty()) st.choices[key] = std::string(d.choice);
+          else if (p.type == ParameterType::choice)
+            st.choices[key] = std::string(p.choices[std::min(p.choices.size() - 1, static_cast<std::size_t>(in(0, static_cast<double>(p.choices.size()))))]);
           else st.numbers[key] = d.critical ? std::optional<case_format::Number>() : num(in(d.lo, d.hi));
         }
         c.strategies.push_back(std::move(st));

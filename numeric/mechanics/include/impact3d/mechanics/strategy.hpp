@@ -43,7 +43,7 @@ struct Parameter {
 };
 
 // A value verification draws for a parameter (verify.cpp): uniform in [lo, hi], or "critical", or the
-// choice named.
+// choice named; a choice left unnamed is drawn uniformly among the parameter's choices.
 struct ParameterDraw {
   double lo = 0, hi = 0;
   bool critical = false;

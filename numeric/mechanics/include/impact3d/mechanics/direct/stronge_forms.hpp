@@ -13,7 +13,6 @@ namespace impact3d::direct {
 struct StrongeForms {
   template <typename Scalar>
   static std::optional<std::array<Scalar, 2>> stick_ratio(const Mat3<Scalar>& K) {
-    if (!(K(1, 1) * K(2, 2) - K(1, 2) * K(2, 1) > Scalar(0))) return std::nullopt;  // as generated_forms.hpp
     const Vec3<Scalar> n = Vec3<Scalar>::UnitX(), t = Vec3<Scalar>::UnitY(), z = Vec3<Scalar>::UnitZ();
     const auto P = solve_rows<Scalar>({Row<Scalar>{n, Scalar(1)}, Row<Scalar>{K.transpose() * t, Scalar(0)},
                                       Row<Scalar>{K.transpose() * z, Scalar(0)}});

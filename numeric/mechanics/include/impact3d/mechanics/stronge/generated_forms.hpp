@@ -17,9 +17,6 @@ namespace impact3d::stronge {
 struct GeneratedForms {
   template <typename Scalar>
   static std::optional<std::array<Scalar, 2>> stick_ratio(const Mat3<Scalar>& K) {
-    // The tangential block is positive definite for any K of bodies (K = I + m' sum ...); refused otherwise,
-    // as the direct engine refuses it.
-    if (!(K(1, 1) * K(2, 2) - K(1, 2) * K(2, 1) > Scalar(0))) return std::nullopt;
     const auto r = generated::stronge_stick_ratio(K);
     if (!is_finite(Scalar(r(0))) || !is_finite(Scalar(r(1)))) return std::nullopt;
     return std::array<Scalar, 2>{r(0), r(1)};

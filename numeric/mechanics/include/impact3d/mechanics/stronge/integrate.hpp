@@ -91,6 +91,44 @@ struct Follow {
     }
     return Scalar(0);
   }
+  // The rounding of the value whose root ends the phase, at the point reached: a few eps of its terms'
+  // size (U_n = U_i,n - K_n . P; the normal work, whose restitution is released from W_c; x).
+  Scalar end_value_rounding() const {
+    using std::abs;
+    if (compressing || law == RestitutionLaw::newton)
+      return Scalar(4) * eps * (abs(U_i(0)) + abs(K(0, 0) * x) + abs(K(0, 1) * a) + abs(K(0, 2) * b));
+    if (law == RestitutionLaw::energetic) return Scalar(4) * eps * (abs(W_c) + abs(W));
+    return Scalar(4) * eps * x;
+  }
+  // How far a rounding d of that value moves its root, where the value changes at `rate` and `curvature`
+  // per unit of x: d / |rate|, and at most sqrt(2 d / |curvature|) where the rate vanishes (the
+  // energetic end of a nearly plastic impact, W flat in x as V_n nears 0). Added to the bound as the
+  // impulse's move, (1, f) times it. Compression's end moves only Poisson's end, (1 + e) times as far:
+  // the energetic law's W is flat there (V_n = 0) and Newton's ends by V_n alone.
+  void add_location_rounding(const Scalar& rate, const Scalar& curvature) {
+    using std::abs;
+    using std::sqrt;
+    if (compressing && law != RestitutionLaw::poisson) return;
+    const Scalar d = end_value_rounding();
+    Scalar dx = abs(rate) > Scalar(0) ? Scalar(d / abs(rate)) : std::numeric_limits<Scalar>::infinity();
+    if (abs(curvature) > Scalar(0)) dx = std::min(dx, Scalar(sqrt(Scalar(2) * d / abs(curvature))));
+    if (!(dx < std::numeric_limits<Scalar>::infinity())) dx = Scalar(1) + x;  // no rate: the impact's scale
+    const Scalar carried = compressing && law == RestitutionLaw::poisson ? Scalar(Scalar(1) + e) : Scalar(1);
+    h.error_bound += dx * (Scalar(1) + mu) * carried;
+  }
+  // The same for a root at H of a step's polynomial p in its variable, whose x advances as xs.
+  void add_location_rounding(const std::vector<Scalar>& p, const std::vector<Scalar>& xs, const Scalar& H) {
+    const Scalar dx_dh = polynomial_at(derivative(xs), H);
+    const std::vector<Scalar> dp = derivative(p);
+    const Scalar rate = polynomial_at(dp, H) / dx_dh;
+    add_location_rounding(rate, Scalar(polynomial_at(derivative(dp), H) / (dx_dh * dx_dh)));
+  }
+  static std::vector<Scalar> derivative(const std::vector<Scalar>& c) {
+    std::vector<Scalar> d(c.size() > 1 ? c.size() - 1 : 1, Scalar(0));
+    for (std::size_t j = 1; j < c.size(); ++j) d[j - 1] = c[j] * Scalar(static_cast<long long>(j));
+    return d;
+  }
+
   void end_compression(const Vec3<Scalar>& U_now) {
     compressing = false;
     x_c = x, W_c = W;
@@ -103,7 +141,9 @@ struct Follow {
   bool from_rest(bool at_start) {
     using std::atan2;
     sliding = false;
-    const auto r = Forms::stick_ratio(K);
+    // The tangential block is positive definite for any K of bodies (K = I + m' sum ...); a K that is not
+    // cannot decide between sticking and sliding out.
+    const auto r = K(1, 1) * K(2, 2) - K(1, 2) * K(2, 1) > Scalar(0) ? Forms::stick_ratio(K) : std::nullopt;
     if (!r) return fail("the tangential block of K is singular: the contact cannot stick or slide out");
     if ((*r)[0] * (*r)[0] + (*r)[1] * (*r)[1] <= mu * mu) {
       f_t = (*r)[0], f_z = (*r)[1];
@@ -241,6 +281,7 @@ struct Follow {
     };
     if (compressing) {
       advance(Scalar(std::max(Scalar(0), Scalar(U()(0) / s))));
+      add_location_rounding(Scalar(-s), Scalar(0));
       end_compression(U());
     }
     const Scalar U_n = U()(0);
@@ -255,6 +296,8 @@ struct Follow {
       case RestitutionLaw::newton: d = std::max(Scalar(0), Scalar((U_n + e * U_i(0)) / s)); break;
     }
     advance(d);
+    if (law == RestitutionLaw::energetic) add_location_rounding(U()(0), Scalar(-s));  // dW/dx = U_n
+    else add_location_rounding(law == RestitutionLaw::newton ? Scalar(-s) : Scalar(-1), Scalar(0));
     return true;
   }
 
@@ -341,7 +384,8 @@ struct Follow {
     // W's terms carry rho^2, whose series grows twice as fast.
     Scalar H(std::min({step_size(ser.u_t, ser.u_z, rho0, 1e6), step_size(ser.x, ser.W, Scalar(1), 1e6), step_size(ser.a, ser.b, Scalar(1), 1e6)}));
     bool ends = false;
-    if (const auto root = first_root(ending_polynomial(ser.x, ser.W, ser.U_n), H)) H = *root, ends = true;
+    const std::vector<Scalar> ending = ending_polynomial(ser.x, ser.W, ser.U_n);
+    if (const auto root = first_root(ending, H)) H = *root, ends = true;
     Scalar last(0);
     for (const auto* v : {&ser.x, &ser.a, &ser.b, &ser.W, &ser.u_t, &ser.u_z}) last = std::max(last, Scalar(abs((*v)[n - 1])));
     Scalar Hn(1);
@@ -356,6 +400,7 @@ struct Follow {
     const Vec3<Scalar> U_now = U();
     const Scalar ut = polynomial_at(ser.u_t, H), uz = polynomial_at(ser.u_z, H);
     u_carried = {ut, uz};
+    if (ends) add_location_rounding(ending, ser.x, H);
     const Scalar rho = sqrt(ut * ut + uz * uz);
     if (rho > Scalar(0)) turn_to(Scalar(ut / rho), Scalar(uz / rho));
     // After compression's end the slide goes on with the velocity carried; after the impact's, it is done.
@@ -422,11 +467,10 @@ struct Follow {
                                    polynomial_at(ser.U_n, t), polynomial_at(ser.u_t, t), polynomial_at(ser.u_z, t)};
     });
     x += H, a = polynomial_at(ser.a, H), b = polynomial_at(ser.b, H), W = polynomial_at(ser.W, H);
+    if (what == phase) add_location_rounding(ending, x_series, H);
     if (what == stop) {
       // The direction it arrived along: minus the velocity's derivative there.
-      std::vector<Scalar> dt(n - 1), dz(n - 1);
-      for (std::size_t j = 1; j < n; ++j) dt[j - 1] = ser.u_t[j] * Scalar(static_cast<long long>(j)), dz[j - 1] = ser.u_z[j] * Scalar(static_cast<long long>(j));
-      const Scalar vt = -polynomial_at(dt, H), vz = -polynomial_at(dz, H);
+      const Scalar vt = -polynomial_at(derivative(ser.u_t), H), vz = -polynomial_at(derivative(ser.u_z), H);
       const Scalar len = sqrt(vt * vt + vz * vz);
       if (len > Scalar(0)) turn_to(Scalar(vt / len), Scalar(vz / len));
       // The slide left at the root: at most rho over the speed's rate len, the rate of P_t changing by 2 mu.

@@ -27,15 +27,6 @@ struct TangentialMap {
     // K is symmetric (problem.hpp); its mean off-diagonal keeps a rounded K's map symmetric.
     return {K(1, 0), K(2, 0), K(1, 1), Scalar((K(1, 2) + K(2, 1)) / Scalar(2)), K(2, 2)};
   }
-
-  // -(k + mu A d) . d: how fast |u| grows along the direction d when sliding along it.
-  Scalar growth(const Scalar& mu, const Scalar& c, const Scalar& s) const {
-    return -((k_t + mu * (A_tt * c + A_tz * s)) * c + (k_z + mu * (A_tz * c + A_zz * s)) * s);
-  }
-  // (k + mu A d) x d: zero where the map carries d onto itself (an invariant direction).
-  Scalar turning(const Scalar& mu, const Scalar& c, const Scalar& s) const {
-    return (k_t + mu * (A_tt * c + A_tz * s)) * s - (k_z + mu * (A_tz * c + A_zz * s)) * c;
-  }
 };
 
 template <typename Scalar>
