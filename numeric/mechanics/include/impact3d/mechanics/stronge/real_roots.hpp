@@ -4,6 +4,7 @@
 // arithmetic cannot tell from a near miss (a critical value within rounding of zero counts as a root).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -18,6 +19,27 @@ template <typename Scalar>
 Scalar polynomial_at(const std::vector<Scalar>& c, const Scalar& x) {
   Scalar y(0);
   for (std::size_t i = c.size(); i-- > 0;) y = y * x + c[i];
+  return y;
+}
+
+// Several polynomials of one length at x, their Horner chains interleaved (each would wait on its own
+// multiply-add's latency).
+template <std::size_t N, typename Scalar>
+std::array<Scalar, N> polynomials_at(const std::array<const std::vector<Scalar>*, N>& c, const Scalar& x) {
+  std::array<Scalar, N> y;
+  y.fill(Scalar(0));
+  for (std::size_t i = c[0]->size(); i-- > 0;)
+    for (std::size_t k = 0; k < N; ++k) y[k] = y[k] * x + (*c[k])[i];
+  return y;
+}
+
+// One polynomial at several points, interleaved likewise.
+template <std::size_t N, typename Scalar>
+std::array<Scalar, N> polynomial_at_points(const std::vector<Scalar>& c, const std::array<Scalar, N>& x) {
+  std::array<Scalar, N> y;
+  y.fill(Scalar(0));
+  for (std::size_t i = c.size(); i-- > 0;)
+    for (std::size_t k = 0; k < N; ++k) y[k] = y[k] * x[k] + c[i];
   return y;
 }
 
