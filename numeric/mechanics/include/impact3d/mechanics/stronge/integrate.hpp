@@ -76,9 +76,14 @@ struct Follow {
   // The path through a step of length H at `points` points, at(h) giving x, a, b, W and U h into it.
   template <typename At>
   void trace_step(const Scalar& H, At at, int points = kPathPoints) {
-    if (!record || !(H > Scalar(0))) return;
+    trace_step(Scalar(0), H, at, points);
+  }
+  // The same from `from` to `to` into a step.
+  template <typename At>
+  void trace_step(const Scalar& from, const Scalar& to, At at, int points = kPathPoints) {
+    if (!record || !(to > from)) return;
     for (int i = 1; i <= points; ++i) {
-      const auto q = at(Scalar(H * Scalar(i) / Scalar(points)));
+      const auto q = at(Scalar(from + (to - from) * Scalar(i) / Scalar(points)));
       trace(q[0], q[1], q[2], q[3], Vec3<Scalar>(q[4], q[5], q[6]));
     }
   }
@@ -331,16 +336,18 @@ struct Follow {
     return true;
   }
 
-  // The first root in (0, H] of the polynomial c whose value at 0 is positive, if it has one there.
-  std::optional<Scalar> first_root(const std::vector<Scalar>& c, const Scalar& H) const {
+  // The first root in (lo, hi] of the polynomial c whose value at lo is positive, if it has one there.
+  std::optional<Scalar> first_root(const std::vector<Scalar>& c, const Scalar& lo, const Scalar& hi) const {
     constexpr std::size_t kSamples = 4;
     std::array<Scalar, kSamples> at;
-    for (std::size_t i = 0; i < kSamples; ++i) at[i] = H * Scalar(static_cast<double>(i + 1)) / Scalar(static_cast<double>(kSamples));
+    for (std::size_t i = 0; i < kSamples; ++i)
+      at[i] = lo + (hi - lo) * Scalar(static_cast<double>(i + 1)) / Scalar(static_cast<double>(kSamples));
     const std::array<Scalar, kSamples> value = polynomial_at_points(c, at);
     for (std::size_t i = 0; i < kSamples; ++i)
-      if (!(value[i] > Scalar(0))) return bisect_root(c, i == 0 ? Scalar(0) : at[i - 1], at[i]);
+      if (!(value[i] > Scalar(0))) return bisect_root(c, i == 0 ? lo : at[i - 1], at[i]);
     return std::nullopt;
   }
+  std::optional<Scalar> first_root(const std::vector<Scalar>& c, const Scalar& H) const { return first_root(c, Scalar(0), H); }
 
   void turn_to(const Scalar& c, const Scalar& s) {
     using std::abs;
@@ -417,29 +424,56 @@ struct Follow {
     // u to eps of itself (the carried direction), the impulse and the work to eps of the impact's scale:
     // W's terms carry rho^2, whose series grows twice as fast.
     Scalar H(step_size({{&ser.u_t, rho0}, {&ser.u_z, rho0}, {&ser.x, Scalar(1)}, {&ser.W, Scalar(1)}, {&ser.a, Scalar(1)}, {&ser.b, Scalar(1)}}, 1e6));
-    bool ends = false;
-    const std::vector<Scalar> ending = ending_polynomial(ser.x, ser.W, ser.U_n);
-    if (const auto root = first_root(ending, H)) H = *root, ends = true;
-    Scalar last(0);
-    for (const auto* v : {&ser.x, &ser.a, &ser.b, &ser.W, &ser.u_t, &ser.u_z}) last = std::max(last, Scalar(abs((*v)[n - 1])));
-    Scalar Hn(1);
-    for (std::size_t j = 0; j + 1 < n; ++j) Hn *= H;
-    h.error_bound += last * Hn + eps * (Scalar(1) + x);
-    ++h.steps;
-    trace_step(H, [&](const Scalar& t) {
+    const auto along = [&](const Scalar& t) {
       return std::array<Scalar, 7>{polynomial_at(ser.x, t), polynomial_at(ser.a, t), polynomial_at(ser.b, t), polynomial_at(ser.W, t),
                                    polynomial_at(ser.U_n, t), polynomial_at(ser.u_t, t), polynomial_at(ser.u_z, t)};
-    });
-    const auto at_H = polynomials_at<6>({&ser.x, &ser.a, &ser.b, &ser.W, &ser.u_t, &ser.u_z}, H);
-    x = at_H[0], a = at_H[1], b = at_H[2], W = at_H[3];
+    };
+    // The truncation of the step as far as it went: its last term there.
+    const auto truncation = [&](const Scalar& to) {
+      Scalar last(0);
+      for (const auto* v : {&ser.x, &ser.a, &ser.b, &ser.W, &ser.u_t, &ser.u_z}) last = std::max(last, Scalar(abs((*v)[n - 1])));
+      Scalar Hn(1);
+      for (std::size_t j = 0; j + 1 < n; ++j) Hn *= to;
+      h.error_bound += last * Hn + eps * (Scalar(1) + x);
+      ++h.steps;
+    };
+    // The state `t` into the step; its direction turned to.
+    const auto reach = [&](const Scalar& t) {
+      const auto q = polynomials_at<6>({&ser.x, &ser.a, &ser.b, &ser.W, &ser.u_t, &ser.u_z}, t);
+      x = q[0], a = q[1], b = q[2], W = q[3];
+      u_carried = {q[4], q[5]};
+      const Scalar rho = sqrt(q[4] * q[4] + q[5] * q[5]);
+      if (rho > Scalar(0)) turn_to(Scalar(q[4] / rho), Scalar(q[5] / rho));
+    };
+    bool ends = false;
+    Scalar from(0);
+    std::vector<Scalar> ending = ending_polynomial(ser.x, ser.W, ser.U_n);
+    std::optional<Scalar> root = first_root(ending, H);
+    if (root && compressing) {
+      // Compression ends inside the step; the same series carries the slide on into restitution, to the
+      // step's end or the impact's.
+      trace_step(*root, along);
+      reach(*root);
+      add_location_rounding(ending, ser.x, *root);
+      const Vec3<Scalar> U_c = U();
+      end_compression(U_c);
+      if (!(end_value(x, W, U_c(0)) > Scalar(0))) return truncation(*root), finish_sliding(U_c), u_carried.reset(), false;
+      from = *root;
+      ending = ending_polynomial(ser.x, ser.W, ser.U_n);
+      root = first_root(ending, from, H);
+    }
+    if (root) H = *root, ends = true;
+    truncation(H);
+    trace_step(from, H, along);
+    reach(H);
     const Vec3<Scalar> U_now = U();
-    const Scalar ut = at_H[4], uz = at_H[5];
-    u_carried = {ut, uz};
-    if (ends) add_location_rounding(ending, ser.x, H);
+    const Scalar ut = (*u_carried)[0], uz = (*u_carried)[1];
     const Scalar rho = sqrt(ut * ut + uz * uz);
-    if (rho > Scalar(0)) turn_to(Scalar(ut / rho), Scalar(uz / rho));
-    // After compression's end the slide goes on with the velocity carried; after the impact's, it is done.
-    if (ends && !phase_ended(U_now)) return u_carried.reset(), false;
+    if (ends) {
+      add_location_rounding(ending, ser.x, H);
+      finish_sliding(U_now);
+      return u_carried.reset(), false;
+    }
     if (rho <= Scalar(16) * eps) {
       u_carried.reset();
       const Scalar g = rho > Scalar(0) ? Forms::direction_rates(K, mu, Scalar(ut / rho), Scalar(uz / rho))[0] : Scalar(-1);
