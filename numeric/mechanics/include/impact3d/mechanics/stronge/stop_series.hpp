@@ -135,8 +135,18 @@ StopTail<Scalar> stop_tail(const Mat3<Scalar>& K, const TangentialMap<Scalar>& m
     if ((delta == Scalar(0) && n >= (is_dual_v<Scalar> ? 1u : 0u)) || (n >= 1 && std::max(size, previous) <= tolerance * std::max(Scalar(sumF.cwiseAbs().maxCoeff()), Scalar(abs(sumG))))) {
       out.F = sumF, out.G = sumG, out.last = delta == Scalar(0) ? Scalar(0) : std::max(size, previous), out.converged = true;
       out.KnF0 = K(0, 0) * F[0][0] + K(0, 1) * F[0][1] + K(0, 2) * F[0][2];
-      out.normal_variation = variation;
-      out.shrinking = g_variation < -g[0];
+      // The sums' remainders past order n: F's terms fall (else not converged), at most halving, so
+      // twice the last; g's coefficient m is at most B_m = (|k_t| + |k_z|)(|C_m| + |S_m|) + mu (|A_tt -
+      // A_zz| / 2 + |A_tz|)(|C2_m| + |S2_m|) (cos and sin's coefficients, |c| + |s| >= 1), each the last
+      // over m / (2 |delta|) or more, so the tail from m = n + 1 is at most 3 B_m |delta|^m where
+      // 3 |delta| <= n + 2 (ratio <= 2/3), else not bounded: not taken as shrinking.
+      const Scalar K_n = abs(K(0, 0)) + abs(K(0, 1)) + abs(K(0, 2));
+      out.normal_variation = variation + Scalar(2) * K_n * std::max(size, previous);
+      const std::size_t m1 = n + 1;
+      const Scalar B = (abs(m.k_t) + abs(m.k_z)) * (abs(C[m1]) + abs(S[m1])) + mu * (abs(half_diff) + abs(m.A_tz)) * (abs(C2[m1]) + abs(S2[m1]));
+      const bool bounded = Scalar(3) * abs(delta) <= Scalar(static_cast<long long>(n + 2));
+      const Scalar g_tail = Scalar(3) * B * abs(Scalar(power * delta));
+      out.shrinking = bounded && g_variation + g_tail < -g[0];
       F.resize(n + 1), G.resize(n + 1);
       out.F_n = std::move(F), out.G_n = std::move(G), out.f_n = std::move(f), out.g_n = std::move(g);
       return out;
