@@ -446,9 +446,13 @@ json::json_pointer pointer_of(const std::string& path) {
 
 TEST_CASE("batch reads a CSV whose header names case paths, and writes solve's numbers as CSV", "[batch]") {
   const fs::path dir = fresh_directory("impact3d-batch-csv");
-  const std::string variants = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_variants.csv";
+  const std::string variants = std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_variants_with_a_bad_row.csv";
+  // The bundled example without the bad row: every row solved, exit 0 (a newcomer's first batch).
+  const Run good = run_argv({"batch", std::string(IMPACT3D_EXAMPLES_DIR) + "/fig8_variants.csv", "--format", "csv"});
+  CHECK(good.status == 0);
+  CHECK(good.err.find("2 rows read, 2 solved, 0 rejected") != std::string::npos);
 
-  // Row 2 of the bundled CSV is this case, written by hand from its columns.
+  // Row 2 of the bundled CSVs is this case, written by hand from its columns.
   const fs::path hand = dir / "row2.json";
   std::ofstream(hand) << R"x({"name": "Figure 8, 25 mph each", "vehicles": [
     {"name": "Malibu", "mass": 1560, "inertia": [[560, 0, -40], [0, 2500, 0], [-40, 0, 2700]], "velocity": [11.176, 0, 0],

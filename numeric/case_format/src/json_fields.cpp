@@ -2,12 +2,15 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "impact3d/case_format/case_spec.hpp"
 #include "impact3d/case_format/escape.hpp"
 #include "impact3d/case_format/limits.hpp"
+#include "impact3d/case_format/nearest_key.hpp"
 
 namespace impact3d::case_format::fields {
 
@@ -22,7 +25,9 @@ void only_keys(const JsonValue& v, const std::string& at, std::initializer_list<
     if (!k.empty() && k[0] == '_') continue;
     bool known = false;
     for (std::string_view a : allowed) known = known || k == a;
-    if (!known) fail(at, fmt::format("unknown key {} (keys starting with '_' are ignored)", case_format::quoted(k)));
+    if (!known)
+      fail(at, fmt::format("unknown key {}{} (keys starting with '_' are ignored)", case_format::quoted(k),
+                           did_you_mean(k, std::vector<std::string_view>(allowed))));
   }
 }
 

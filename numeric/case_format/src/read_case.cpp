@@ -22,6 +22,7 @@
 #include "impact3d/case_format/json_literals.hpp"
 #include "impact3d/case_format/json_tree.hpp"
 #include "impact3d/case_format/limits.hpp"
+#include "impact3d/case_format/nearest_key.hpp"
 #include "impact3d/case_format/scalar_text.hpp"
 #include "impact3d/case_format/strategy_kinds.hpp"
 #include "impact3d/case_format/strategy_option.hpp"
@@ -135,7 +136,10 @@ class Reader {
           (!unknown || k < *unknown))
         unknown = &k;
     }
-    if (unknown) fail(Where(at, *unknown), "unknown key (keys starting with '_' are ignored)");
+    if (unknown) {
+      const std::vector<std::string_view> known(allowed.begin(), allowed.end());
+      fail(Where(at, *unknown), "unknown key" + did_you_mean(*unknown, known) + " (keys starting with '_' are ignored)");
+    }
     return v;
   }
   const JsonValue& object(const JsonValue& v, const Where& at, std::initializer_list<std::string_view> allowed) const {
