@@ -28,7 +28,7 @@ std::size_t distance(std::string_view a, std::string_view b) {
 
 bool begins_at_underscore(std::string_view longer, std::string_view shorter) {
   return !shorter.empty() && longer.size() > shorter.size() && longer[shorter.size()] == '_' &&
-         distance(longer.substr(0, shorter.size()), shorter) == 0;
+         std::equal(shorter.begin(), shorter.end(), longer.begin(), [](char a, char b) { return folded(a) == folded(b); });
 }
 
 }  // namespace

@@ -20,8 +20,6 @@ struct ApproachSeries {
   std::vector<Scalar> x, a, b, W, U_n, u_t, u_z;
 };
 
-// The series about (x0, a0, b0, W0) to `order`, with the sliding velocity u0 there (carried by the steps:
-// U_i - K P loses its relative accuracy as u falls towards rounding); u0 must not be zero.
 // sum_{i <= j} p_i q_{j - i}, in four running sums, for one would wait on each addition's latency.
 template <typename Scalar>
 Scalar convolution(const std::vector<Scalar>& p, const std::vector<Scalar>& q, std::size_t j) {
@@ -35,6 +33,8 @@ Scalar convolution(const std::vector<Scalar>& p, const std::vector<Scalar>& q, s
   return (w0 + w1) + (w2 + w3);
 }
 
+// The series about (x0, a0, b0, W0) to `order`, with the sliding velocity u0 there (carried by the steps:
+// U_i - K P loses its relative accuracy as u falls towards rounding); u0 must not be zero.
 // Into `s`, whose vectors (and the speed's, r) keep their storage from one step to the next.
 template <typename Scalar>
 void approach_series_into(ApproachSeries<Scalar>& s, std::vector<Scalar>& r, const Mat3<Scalar>& K, const Vec3<Scalar>& U_i,

@@ -132,11 +132,6 @@ struct Follow {
     const Scalar rate = polynomial_at(dp, H) / dx_dh;
     add_location_rounding(rate, Scalar(polynomial_at(derivative(dp), H) / (dx_dh * dx_dh)));
   }
-  static std::vector<Scalar> derivative(const std::vector<Scalar>& c) {
-    std::vector<Scalar> d(c.size() > 1 ? c.size() - 1 : 1, Scalar(0));
-    for (std::size_t j = 1; j < c.size(); ++j) d[j - 1] = c[j] * Scalar(static_cast<long long>(j));
-    return d;
-  }
 
   void end_compression(const Vec3<Scalar>& U_now) {
     compressing = false;
@@ -275,21 +270,19 @@ struct Follow {
   // benchmark's collisions it spares 9 of 10 attempts on slides that never stop, and costs those that
   // stop no step); the steps try again as the slide slows.
   bool stop_beyond_end(const Scalar& rho, const Scalar& growth, const Scalar& c, const Scalar& s) const {
-    using std::abs;
     using std::sqrt;
     if (!(growth < Scalar(0))) return false;
     const Scalar U_n = U()(0);
     const Scalar s_n = K(0, 0) + mu * (K(0, 1) * c + K(0, 2) * s);  // -dV_n/dp along the slide
     if (!(s_n > Scalar(0))) return false;
-    Scalar left;
-    if (compressing) left = U_n / s_n;
-    else if (law == RestitutionLaw::energetic) {
-      const Scalar work = W - (Scalar(1) - e * e) * W_c;
-      left = sqrt(Scalar(2) * std::max(Scalar(0), work) / s_n);
-      if (U_n < Scalar(0)) left = std::min(left, Scalar(std::max(Scalar(0), work) / -U_n));
-    } else if (law == RestitutionLaw::poisson) left = (Scalar(1) + e) * x_c - x;
-    else left = (U_n + e * U_i(0)) / s_n;
-    return rho / -growth > std::max(Scalar(0), left);
+    // The end condition's value, falling at s_n (V_n, Newton's) or 1 (x, Poisson's) or as the work.
+    const Scalar v = std::max(Scalar(0), compressing ? U_n : end_value(x, W, U_n));
+    Scalar left = compressing || law == RestitutionLaw::newton ? Scalar(v / s_n) : v;
+    if (!compressing && law == RestitutionLaw::energetic) {
+      left = sqrt(Scalar(2) * v / s_n);
+      if (U_n < Scalar(0)) left = std::min(left, Scalar(v / -U_n));
+    }
+    return rho / -growth > left;
   }
 
   bool fail(const char* why) {
@@ -455,9 +448,7 @@ struct Follow {
       trace_step(*root, along);
       reach(*root);
       add_location_rounding(ending, ser.x, *root);
-      const Vec3<Scalar> U_c = U();
-      end_compression(U_c);
-      if (!(end_value(x, W, U_c(0)) > Scalar(0))) return truncation(*root), finish_sliding(U_c), u_carried.reset(), false;
+      if (!phase_ended(U())) return truncation(*root), u_carried.reset(), false;  // no restitution
       from = *root;
       ending = ending_polynomial(ser.x, ser.W, ser.U_n);
       root = first_root(ending, from, H);
@@ -471,7 +462,7 @@ struct Follow {
     const Scalar rho = sqrt(ut * ut + uz * uz);
     if (ends) {
       add_location_rounding(ending, ser.x, H);
-      finish_sliding(U_now);
+      phase_ended(U_now);  // the impact's end
       return u_carried.reset(), false;
     }
     if (rho <= Scalar(16) * eps) {

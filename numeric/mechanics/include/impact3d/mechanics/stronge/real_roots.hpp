@@ -22,6 +22,14 @@ Scalar polynomial_at(const std::vector<Scalar>& c, const Scalar& x) {
   return y;
 }
 
+// The derivative's coefficients (a constant's derivative is the zero polynomial).
+template <typename Scalar>
+std::vector<Scalar> derivative(const std::vector<Scalar>& c) {
+  std::vector<Scalar> d(c.size() > 1 ? c.size() - 1 : 1, Scalar(0));
+  for (std::size_t j = 1; j < c.size(); ++j) d[j - 1] = c[j] * Scalar(static_cast<long long>(j));
+  return d;
+}
+
 // Several polynomials of one length at x, their Horner chains interleaved (each would wait on its own
 // multiply-add's latency).
 template <std::size_t N, typename Scalar>
@@ -108,8 +116,7 @@ std::vector<Scalar> real_roots(std::vector<Scalar> c, const Scalar& zero) {
   const std::size_t degree = c.size() - 1;
   if (degree == 0) return {};
   if (degree == 1) return {Scalar(-c[0] / c[1])};
-  std::vector<Scalar> d(degree);
-  for (std::size_t i = 1; i <= degree; ++i) d[i - 1] = c[i] * Scalar(static_cast<long long>(i));
+  const std::vector<Scalar> d = derivative(c);
   // Cauchy's bound: every root lies within 1 + max |c_i / c_n|.
   Scalar bound(0);
   for (std::size_t i = 0; i < degree; ++i) bound = std::max(bound, Scalar(abs(c[i] / c[degree])));
